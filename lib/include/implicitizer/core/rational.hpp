@@ -1,0 +1,28 @@
+#pragma once
+/// \file
+/// The number types. The public coefficient type is CGAL's GMP rational; inside,
+/// polynomials keep a rational content times a primitive integer polynomial
+/// (FLINT's fmpq_mpoly layout), with GMP's C++ integers (docs/design.md says why).
+
+#include <CGAL/Gmpq.h>
+#include <gmpxx.h>
+
+#include <string>
+
+namespace implicitizer {
+
+/// An exact rational number: the public coefficient type.
+using Rational = CGAL::Gmpq;
+/// An exact integer, used inside polynomials and algorithms.
+using Integer = mpz_class;
+
+/// Returns `q` as a GMP C++ rational (exact copy).
+mpq_class to_mpq(const Rational& q);
+/// Returns `q` as a CGAL rational (exact copy).
+Rational to_rational(const mpq_class& q);
+/// Returns the integer `z` as a CGAL rational.
+Rational to_rational(const Integer& z);
+/// Prints `q` as `n` or `n/d` (lowest terms, sign on the numerator).
+std::string to_string(const Rational& q);
+
+}  // namespace implicitizer

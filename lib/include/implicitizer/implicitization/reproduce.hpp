@@ -1,0 +1,20 @@
+#pragma once
+/// \file
+/// Scripts that recompute an implicitization in Singular and in Macaulay2, so that a
+/// mathematician can check an answer with a system nobody here wrote.
+
+#include <string>
+
+#include "implicitizer/implicitization/parametrization.hpp"
+
+namespace implicitizer {
+
+/// A Singular script that builds the same ideal and prints the generators of its
+/// elimination ideal (`eliminate`), one per line.
+std::string singular_script(const Parametrization& parametrization);
+
+/// A Macaulay2 script that builds the same ideal and prints the generators of its
+/// elimination ideal (`eliminate`).
+std::string macaulay2_script(const Parametrization& parametrization);
+
+}  // namespace implicitizer

@@ -1,0 +1,18 @@
+#pragma once
+/// \file
+/// Multivariate gcd and exact division, delegated to FLINT's fmpz_mpoly (its
+/// Brown/Zippel/Hensel gcd is far better than anything hand-written here).
+
+#include "implicitizer/polynomial/polynomial.hpp"
+
+namespace implicitizer {
+
+/// gcd(a, b) as a primitive integer polynomial with positive leading coefficient;
+/// gcd(0, 0) = 0.
+Polynomial gcd(const Polynomial& a, const Polynomial& b);
+/// lcm(a, b), primitive with positive leading coefficient; 0 if either is 0.
+Polynomial lcm(const Polynomial& a, const Polynomial& b);
+/// a / b when b divides a exactly (over ℚ); throws std::logic_error otherwise.
+Polynomial divide_exact(const Polynomial& a, const Polynomial& b);
+
+}  // namespace implicitizer

@@ -1,0 +1,17 @@
+#include "implicitizer/core/errors.hpp"
+
+namespace implicitizer {
+
+const char* to_string(Limit limit) {
+  switch (limit) {
+    case Limit::time:
+      return "time";
+    case Limit::size:
+      return "size";
+    case Limit::cancelled:
+      return "cancelled";
+  }
+  return "unknown";
+}
+
+}  // namespace implicitizer
