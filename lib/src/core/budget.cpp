@@ -17,7 +17,15 @@ Budget& Budget::set_timeout(double seconds) {
   has_deadline_ = seconds > 0;
   timeout_seconds_ = has_deadline_ ? seconds : 0;
   if (has_deadline_) {
-    deadline_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    // Converting more seconds than Clock::duration holds (about 292 years of
+    // nanoseconds) is undefined and in practice wraps into the past, so a huge or
+    // infinite timeout would fire at once. Such a deadline saturates at the end of
+    // time; half the room left keeps the double's rounding well clear of overflow.
+    const Clock::time_point now = Clock::now();
+    const std::chrono::duration<double> wanted(seconds);
+    deadline_ = wanted < (Clock::time_point::max() - now) / 2
+                    ? now + std::chrono::duration_cast<Clock::duration>(wanted)
+                    : Clock::time_point::max();
   }
   return *this;
 }
