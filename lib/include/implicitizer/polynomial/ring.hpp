@@ -53,6 +53,14 @@ class Ring {
   const std::int32_t* exponents(const std::int32_t* m) const { return m + key_size_; }
   /// Total degree of `m`.
   std::int32_t total_degree(const std::int32_t* m) const;
+  /// The first row of the order's matrix applied to `m`: the degree the order refines
+  /// first (total degree for grlex and grevlex, the weighted degree of a weighted
+  /// order, the first block's degree of a block order, the first exponent for lex).
+  /// Buchberger's sugar is measured in it, as Singular measures its ecart in the
+  /// order's first weight vector: with the total degree instead, an elimination order
+  /// picks pairs by x,y,z degree and the basis blows up (biquadratic_patch: from 2 ms
+  /// to over 100 s).
+  std::int32_t order_degree(const std::int32_t* m) const { return key_size_ == 0 ? 0 : m[0]; }
 
   /// -1, 0 or 1 as `a` is smaller than, equal to or larger than `b` in the order.
   int compare(const std::int32_t* a, const std::int32_t* b) const {
