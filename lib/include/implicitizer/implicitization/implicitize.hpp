@@ -10,6 +10,9 @@
 
 namespace implicitizer {
 
+/// The ring of implicit equations: x, y, z with grevlex (the contract's output order).
+RingPtr space_ring();
+
 /// Which route computes the equation.
 enum class ImplicitizationMethod {
   automatic,  ///< the route that is right and fastest for the input (today: groebner)
@@ -28,7 +31,7 @@ struct ImplicitizeOptions {
 
 /// The implicit equation and how it was found.
 struct ImplicitizeResult {
-  Polynomial implicit;             ///< primitive, positive leading coefficient, ring x,y,z grevlex
+  Polynomial implicit{space_ring()};  ///< primitive, positive leading coefficient, ring x,y,z grevlex
   std::int32_t degree = 0;         ///< total degree of `implicit`
   std::string method;              ///< the route used ("groebner")
   bool verified = false;           ///< substitution into `implicit` gave exactly 0
@@ -45,8 +48,5 @@ struct ImplicitizeResult {
 /// image is a curve, a point, or fills space), LimitExceeded when the budget runs out.
 /// A failed verification throws std::logic_error: it is a bug, never an answer.
 ImplicitizeResult implicitize(const Parametrization& parametrization, const ImplicitizeOptions& options = {});
-
-/// The ring of implicit equations: x, y, z with grevlex (the contract's output order).
-RingPtr space_ring();
 
 }  // namespace implicitizer
