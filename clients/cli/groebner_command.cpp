@@ -1,0 +1,81 @@
+#include "groebner_command.hpp"
+
+#include <iostream>
+#include <iterator>
+#include <vector>
+
+#include "arguments.hpp"
+#include "buchberger_flags.hpp"
+#include "error_report.hpp"
+#include "help.hpp"
+#include "implicitizer/codec/groebner_request.hpp"
+#include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/polynomial/printer.hpp"
+
+namespace implicitizer::cli {
+namespace {
+
+constexpr const char* kCommand = "groebner";
+
+std::vector<OptionSpec> option_specs() {
+  std::vector<OptionSpec> spec = {{"vars", true},      {"order", true}, {"weights", true},
+                                  {"eliminate", true}, {"json", false}, {"help", false}};
+  spec.insert(spec.end(), std::begin(kBuchbergerOptions), std::end(kBuchbergerOptions));
+  return spec;
+}
+
+// One polynomial per line; the zero ideal (empty basis) prints `0`, which generates it.
+void print_polynomials(const std::vector<Polynomial>& polynomials) {
+  if (polynomials.empty()) std::cout << "0\n";
+  for (const Polynomial& p : polynomials) std::cout << to_string(p) << '\n';
+}
+
+}  // namespace
+
+int run_groebner_command(std::span<const std::string> args) {
+  GroebnerRequest request;
+  BuchbergerParams params;
+  ErrorReport report;
+  try {
+    const std::vector<OptionSpec> spec = option_specs();
+    const Arguments arguments = parse_arguments(args, spec);
+    if (arguments.has("help")) {
+      std::cout << kGroebnerHelp;
+      return kExitOk;
+    }
+    report.json = arguments.has("json");
+    request.polynomials = arguments.positionals();
+    if (request.polynomials.empty()) throw UsageError("no polynomials given");
+    if (const auto vars = arguments.value("vars")) request.variables = split_list(*vars, "vars");
+    if (const auto order = arguments.value("order")) {
+      if (*order != "lex" && *order != "grlex" && *order != "grevlex") {
+        throw UsageError("--order must be lex, grlex or grevlex, not '" + *order + "'");
+      }
+      request.order = *order;
+    }
+    if (const auto weights = arguments.value("weights")) {
+      std::vector<int> w;
+      for (const std::string& item : split_list(*weights, "weights")) w.push_back(parse_int(item, "weights"));
+      request.weights = std::move(w);
+    }
+    if (const auto eliminate = arguments.value("eliminate")) request.eliminate = split_list(*eliminate, "eliminate");
+    request.timeout_seconds = timeout_from(arguments);
+    params = buchberger_params_from(arguments);
+  } catch (const UsageError& e) {
+    return report_usage_error(e.what(), kCommand);
+  }
+  for (std::size_t i = 0; i < request.polynomials.size(); ++i) {
+    report.field_texts["polynomials[" + std::to_string(i) + "]"] = request.polynomials[i];
+  }
+
+  return run_reporting_errors(report, [&] {
+    const GroebnerAnswer answer = answer_groebner_request(request, std::move(params));
+    if (report.json) {
+      std::cout << encode_groebner_response(answer) << '\n';
+    } else {
+      print_polynomials(answer.elimination_ideal ? *answer.elimination_ideal : answer.basis);
+    }
+  });
+}
+
+}  // namespace implicitizer::cli

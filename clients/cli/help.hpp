@@ -1,0 +1,15 @@
+#pragma once
+/// \file
+/// The texts of `implicitizer --help` and `implicitizer help COMMAND`
+/// (docs/cli.md is the long form).
+
+namespace implicitizer::cli {
+
+/// The overview: commands, exit statuses, where the syntax is described.
+extern const char* const kGeneralHelp;
+/// `implicitizer implicitize --help`.
+extern const char* const kImplicitizeHelp;
+/// `implicitizer groebner --help`.
+extern const char* const kGroebnerHelp;
+
+}  // namespace implicitizer::cli

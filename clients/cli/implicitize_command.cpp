@@ -1,0 +1,91 @@
+#include "implicitize_command.hpp"
+
+#include <iostream>
+#include <iterator>
+#include <vector>
+
+#include "arguments.hpp"
+#include "buchberger_flags.hpp"
+#include "error_report.hpp"
+#include "help.hpp"
+#include "implicitizer/codec/implicitize_request.hpp"
+#include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/polynomial/printer.hpp"
+
+namespace implicitizer::cli {
+namespace {
+
+constexpr const char* kCommand = "implicitize";
+
+std::vector<OptionSpec> option_specs() {
+  std::vector<OptionSpec> spec = {{"x", true},      {"y", true},     {"z", true},    {"params", true},
+                                  {"method", true}, {"json", false}, {"help", false}};
+  spec.insert(spec.end(), std::begin(kBuchbergerOptions), std::end(kBuchbergerOptions));
+  return spec;
+}
+
+// The method is checked before anything is computed: an unknown or unbuilt method is
+// a usage error (exit 2), whatever the expressions are.
+void check_method(const std::string& method, bool json) {
+  try {
+    (void)parse_implicitization_method(method);
+  } catch (const InputError& e) {
+    const bool later = method == "resultant" || method == "interpolation";
+    const std::string message =
+        later ? "method '" + method + "' is not built yet (available: auto, groebner)"
+              : "unknown method '" + method + "' (expected auto, groebner, resultant or interpolation)";
+    if (json) std::cout << encode_error(InputError(e.code(), message).in_field("method")) << '\n';
+    throw UsageError(message);
+  }
+}
+
+}  // namespace
+
+int run_implicitize_command(std::span<const std::string> args) {
+  ImplicitizeRequest request;
+  BuchbergerParams params;
+  ErrorReport report;
+  try {
+    const std::vector<OptionSpec> spec = option_specs();
+    const Arguments arguments = parse_arguments(args, spec);
+    if (arguments.has("help")) {
+      std::cout << kImplicitizeHelp;
+      return kExitOk;
+    }
+    if (!arguments.positionals().empty()) {
+      throw UsageError("unexpected argument '" + arguments.positionals().front() + "'");
+    }
+    report.json = arguments.has("json");
+    for (const char* coordinate : {"x", "y", "z"}) {
+      if (!arguments.has(coordinate)) throw UsageError(std::string("missing --") + coordinate);
+    }
+    request.x = *arguments.value("x");
+    request.y = *arguments.value("y");
+    request.z = *arguments.value("z");
+    if (const auto params_text = arguments.value("params")) {
+      request.parameters = split_list(*params_text, "params");
+      report.field_texts["parameters"] = *params_text;
+    }
+    if (const auto method = arguments.value("method")) request.method = *method;
+    check_method(request.method, report.json);
+    request.timeout_seconds = timeout_from(arguments);
+    params = buchberger_params_from(arguments);
+  } catch (const UsageError& e) {
+    return report_usage_error(e.what(), kCommand);
+  }
+  report.field_texts["x"] = request.x;
+  report.field_texts["y"] = request.y;
+  report.field_texts["z"] = request.z;
+
+  return run_reporting_errors(report, [&] {
+    const ImplicitizeResult result = answer_implicitize_request(request, std::move(params));
+    if (report.json) {
+      std::cout << encode_implicitize_response(result) << '\n';
+    } else {
+      std::cout << to_string(result.implicit) << '\n';
+    }
+  });
+}
+
+}  // namespace implicitizer::cli

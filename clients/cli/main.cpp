@@ -1,0 +1,62 @@
+/// \file
+/// build/bin/implicitizer: dispatches to one command. Every failure becomes an exit
+/// status (docs/cli.md); nothing escapes main, so the program never aborts.
+
+#include <exception>
+#include <iostream>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "error_report.hpp"
+#include "groebner_command.hpp"
+#include "help.hpp"
+#include "implicitize_command.hpp"
+
+namespace {
+
+using namespace implicitizer::cli;
+
+int run(const std::vector<std::string>& words) {
+  if (words.empty()) {
+    std::cerr << kGeneralHelp;
+    return kExitUsage;
+  }
+  const std::string& command = words.front();
+  const std::span<const std::string> rest(words.data() + 1, words.size() - 1);
+  if (command == "implicitize") return run_implicitize_command(rest);
+  if (command == "groebner") return run_groebner_command(rest);
+  if (command == "--version" || command == "version") {
+    std::cout << "implicitizer " << IMPLICITIZER_VERSION << '\n';
+    return kExitOk;
+  }
+  if (command == "--help" || command == "-h" || command == "help") {
+    if (rest.empty()) {
+      std::cout << kGeneralHelp;
+    } else if (rest.front() == "implicitize") {
+      std::cout << kImplicitizeHelp;
+    } else if (rest.front() == "groebner") {
+      std::cout << kGroebnerHelp;
+    } else {
+      return report_usage_error("no help for unknown command '" + rest.front() + "'", nullptr);
+    }
+    return kExitOk;
+  }
+  if (command == "resultant" || command == "sdf" || command == "render") {
+    return report_usage_error("the command '" + command + "' is not built yet", nullptr);
+  }
+  return report_usage_error("unknown command '" + command + "'", nullptr);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const std::exception& e) {
+    std::cerr << "error: internal error: " << e.what() << '\n';
+  } catch (...) {
+    std::cerr << "error: internal error\n";
+  }
+  return kExitInternalError;
+}

@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// An implicitization request as the outside world states it (the contract's
+/// `POST /v1/implicitize` body, or the command line's flags), and the one function
+/// that answers it with the library. The HTTP handler and `implicitizer implicitize`
+/// both call answer_implicitize_request(), so they cannot disagree.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "implicitizer/groebner/buchberger.hpp"
+#include "implicitizer/implicitization/implicitize.hpp"
+
+namespace implicitizer {
+
+/// The fields of a request, still as text: nothing is parsed or validated here.
+struct ImplicitizeRequest {
+  std::string x;  ///< expression for x in the parameters
+  std::string y;  ///< expression for y
+  std::string z;  ///< expression for z
+  /// Explicit parameter names; absent means "every identifier other than x, y, z".
+  std::optional<std::vector<std::string>> parameters;
+  /// `auto`, `groebner`; `resultant` and `interpolation` are refused as not yet built.
+  std::string method = "auto";
+  /// Wall-time limit in seconds; absent or <= 0 means none (the caller may impose its own).
+  std::optional<double> timeout_seconds;
+};
+
+/// Answers `request`: parses the method (InputError `unknown_method`, field
+/// "method"), then the parametrization (InputError with field "x", "y", "z" or
+/// "parameters"), then implicitizes with `params` (strategy, criteria, size limit,
+/// cancellation). The request's timeout, when present, replaces the deadline of
+/// `params.budget` and starts counting now. Throws what implicitize() throws:
+/// NoSingleEquation, LimitExceeded.
+ImplicitizeResult answer_implicitize_request(const ImplicitizeRequest& request,
+                                             BuchbergerParams params = BuchbergerParams());
+
+}  // namespace implicitizer

@@ -1,0 +1,74 @@
+#pragma once
+/// \file
+/// The JSON form of requests, responses and errors: the contract's HTTP bodies,
+/// which the command line's `--json` prints byte for byte. This is the only code
+/// in the project that reads or writes JSON.
+///
+/// Decoding is strict: the body must be one UTF-8 JSON object; unknown fields are
+/// refused (`unknown_field`) rather than ignored, so that a misspelt optional field
+/// (`"timeout"` for `"timeout_ms"`) cannot silently fall back to a default, and a
+/// field given twice is refused (`duplicate_field`). Nesting deeper than
+/// JsonLimits::max_depth is refused before parsing, so no input can exhaust the stack.
+///
+/// Encoding writes compact JSON (no spaces, no trailing newline) with keys in the
+/// order the contract lists them; times in milliseconds with at most 3 decimals.
+
+#include <string>
+#include <string_view>
+
+#include "implicitizer/codec/groebner_request.hpp"
+#include "implicitizer/codec/implicitize_request.hpp"
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/implicitization/implicitize.hpp"
+
+namespace implicitizer {
+
+/// Limits of the decoders.
+struct JsonLimits {
+  std::size_t max_depth = 32;  ///< deepest nesting of arrays and objects
+};
+
+/// Reads a `POST /v1/implicitize` body: `{"x": E, "y": E, "z": E, "parameters": [..]?,
+/// "method": M?, "timeout_ms": T?}`. Throws InputError: `invalid_json` (at the byte
+/// offset of the syntax error), `json_too_deep`, `wrong_type`, `missing_field`,
+/// `unknown_field`, `duplicate_field`, `invalid_value` (a negative or non-finite
+/// timeout); the error's field names the offending member ("parameters[1]").
+ImplicitizeRequest decode_implicitize_request(std::string_view body, const JsonLimits& limits = {});
+
+/// Reads a `POST /v1/groebner` body: `{"polynomials": [P..], "variables": [..]?,
+/// "order": O?, "weights": [N..]?, "eliminate": [..]?, "timeout_ms": T?}`
+/// (`weights` and `timeout_ms` extend the contract). Throws InputError as
+/// decode_implicitize_request().
+GroebnerRequest decode_groebner_request(std::string_view body, const JsonLimits& limits = {});
+
+/// `{"implicit", "degree", "variables", "method", "verified", "elapsed_ms", "stats":
+/// {"pairs", "product_criterion", "chain_criterion", "reductions", "zero_reductions",
+/// "reduction_steps", "max_degree", "basis_size", "groebner_ms", "verify_ms"},
+/// "reproduce": {"singular", "macaulay2"}}`.
+std::string encode_implicitize_response(const ImplicitizeResult& result);
+
+/// `{"basis", "order", "stats": {"pairs", "product_criterion", "chain_criterion",
+/// "reductions", "zero_reductions", "reduction_steps", "max_degree", "basis_size",
+/// "groebner_ms"}, "elapsed_ms"}`, plus `"elimination_ideal"` when present.
+std::string encode_groebner_response(const GroebnerAnswer& answer);
+
+/// `{"error": {"code", "message", "position"?, "field"?}}`: position when the error
+/// has one, field when it is not empty.
+std::string encode_error(const InputError& error);
+
+/// `{"error": {"code": "no_single_equation", "message", "generators": [..]}}`.
+std::string encode_error(const NoSingleEquation& error);
+
+/// `{"error": {"code", "message", "limit"}}` with code `time_limit_exceeded`,
+/// `size_limit_exceeded` or `cancelled` and limit `time`, `size` or `cancelled`.
+std::string encode_error(const LimitExceeded& error);
+
+/// `{"error": {"code", "message"}}` for errors of no library type (`internal_error`,
+/// `not_found`, ...).
+std::string encode_error(std::string_view code, std::string_view message);
+
+/// The `code` encode_error() writes for `limit`: `time_limit_exceeded`,
+/// `size_limit_exceeded` or `cancelled`.
+const char* limit_error_code(Limit limit);
+
+}  // namespace implicitizer

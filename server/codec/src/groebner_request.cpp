@@ -1,0 +1,135 @@
+#include "implicitizer/codec/groebner_request.hpp"
+
+#include <chrono>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/groebner/elimination.hpp"
+#include "implicitizer/polynomial/expression.hpp"
+#include "implicitizer/polynomial/monomial_order.hpp"
+#include "implicitizer/polynomial/parser.hpp"
+#include "implicitizer/polynomial/ring.hpp"
+
+namespace implicitizer {
+namespace {
+
+std::string element_field(const char* name, std::size_t i) { return std::string(name) + "[" + std::to_string(i) + "]"; }
+
+MonomialOrder order_of(const GroebnerRequest& request) {
+  MonomialOrder order;
+  try {
+    order = MonomialOrder::from_name(request.order);
+  } catch (const InputError& e) {
+    throw e.in_field("order");
+  }
+  if (!request.weights) return order;
+  try {
+    return MonomialOrder::weighted(*request.weights, order);
+  } catch (const InputError& e) {
+    throw e.in_field("weights");
+  }
+}
+
+// The variables named by the request, or those of the inputs in order of first
+// appearance (one identifier list per expression, merged without repeats).
+std::vector<std::string> variables_of(const GroebnerRequest& request,
+                                      const std::vector<std::unique_ptr<Expression>>& expressions) {
+  if (request.variables) return *request.variables;
+  std::vector<std::string> variables;
+  for (const auto& e : expressions) {
+    for (std::string& name : collect_identifiers(*e)) {
+      bool seen = false;
+      for (const std::string& v : variables) seen = seen || v == name;
+      if (!seen) variables.push_back(std::move(name));
+    }
+  }
+  return variables;
+}
+
+}  // namespace
+
+GroebnerAnswer answer_groebner_request(const GroebnerRequest& request, BuchbergerParams params) {
+  const auto start = std::chrono::steady_clock::now();
+  if (request.polynomials.empty()) {
+    throw InputError("empty_input", "no polynomials given").in_field("polynomials");
+  }
+  if (request.timeout_seconds) params.budget.set_timeout(*request.timeout_seconds);
+
+  std::vector<std::unique_ptr<Expression>> expressions;
+  expressions.reserve(request.polynomials.size());
+  for (std::size_t i = 0; i < request.polynomials.size(); ++i) {
+    try {
+      expressions.push_back(parse_expression(request.polynomials[i]));
+    } catch (const InputError& e) {
+      throw e.in_field(element_field("polynomials", i));
+    }
+  }
+  const MonomialOrder order = order_of(request);
+  const bool eliminating = request.eliminate && !request.eliminate->empty();
+
+  // When eliminating, the generators' ring only fixes the order of the remaining
+  // variables; eliminate() builds the block ring itself and applies `order` to them.
+  RingPtr ring;
+  try {
+    ring = Ring::make(variables_of(request, expressions), eliminating ? MonomialOrder::grevlex() : order);
+  } catch (const InputError& e) {
+    throw e.in_field(e.code() == "invalid_order" ? (request.weights ? "weights" : "order") : "variables");
+  }
+
+  std::vector<Polynomial> generators;
+  generators.reserve(expressions.size());
+  for (std::size_t i = 0; i < expressions.size(); ++i) {
+    try {
+      generators.push_back(evaluate_polynomial(*expressions[i], ring, params.budget));
+    } catch (const InputError& e) {
+      throw e.in_field(element_field("polynomials", i));
+    }
+  }
+
+  GroebnerAnswer answer;
+  if (eliminating) {
+    // Every name must be a variable, listed once, and some variable must remain:
+    // the library's block ring needs a non-empty second block.
+    const std::vector<std::string>& names = *request.eliminate;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (!ring->index_of(names[i])) {
+        throw InputError("unknown_variable", "cannot eliminate '" + names[i] + "': it is not a variable of the ring")
+            .in_field(element_field("eliminate", i));
+      }
+      for (std::size_t j = 0; j < i; ++j) {
+        if (names[j] == names[i]) {
+          throw InputError("invalid_variables", "'" + names[i] + "' is listed twice")
+              .in_field(element_field("eliminate", i));
+        }
+      }
+    }
+    if (names.size() >= ring->num_variables()) {
+      throw InputError("invalid_variables", "eliminating every variable leaves no variable for the ideal")
+          .in_field("eliminate");
+    }
+    EliminationResult result;
+    try {
+      result = eliminate(generators, *request.eliminate, params, order);
+    } catch (const InputError& e) {
+      throw e.field().empty()
+          ? e.in_field(e.code() == "invalid_order" ? (request.weights ? "weights" : "order") : "eliminate")
+          : e;
+    }
+    answer.basis = std::move(result.groebner.basis);
+    answer.stats = result.groebner.stats;
+    answer.order = result.block_ring->order().name();
+    answer.elimination_ideal = std::move(result.elimination);
+  } else {
+    GroebnerResult result = compute_groebner_basis(generators, params);
+    answer.basis = std::move(result.basis);
+    answer.stats = result.stats;
+    answer.order = order.name();
+  }
+  answer.elapsed_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return answer;
+}
+
+}  // namespace implicitizer

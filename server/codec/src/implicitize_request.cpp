@@ -1,0 +1,23 @@
+#include "implicitizer/codec/implicitize_request.hpp"
+
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/implicitization/parametrization.hpp"
+
+namespace implicitizer {
+
+ImplicitizeResult answer_implicitize_request(const ImplicitizeRequest& request, BuchbergerParams params) {
+  ImplicitizeOptions options;
+  try {
+    options.method = parse_implicitization_method(request.method);
+  } catch (const InputError& e) {
+    throw e.in_field("method");
+  }
+  // The deadline starts here, so that parsing a huge input counts against it too.
+  if (request.timeout_seconds) params.budget.set_timeout(*request.timeout_seconds);
+  const Parametrization parametrization =
+      parse_parametrization(request.x, request.y, request.z, request.parameters, params.budget);
+  options.groebner = std::move(params);
+  return implicitize(parametrization, options);
+}
+
+}  // namespace implicitizer

@@ -1,0 +1,352 @@
+#include "implicitizer/codec/json_codec.hpp"
+
+#include <rapidjson/document.h>
+#include <rapidjson/error/en.h>
+#include <rapidjson/stringbuffer.h>
+#include <rapidjson/writer.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "implicitizer/polynomial/printer.hpp"
+
+namespace implicitizer {
+namespace {
+
+using Writer = rapidjson::Writer<rapidjson::StringBuffer>;
+
+// ---- decoding -------------------------------------------------------------
+
+// Rejects nesting deeper than `max_depth` before RapidJSON sees the text. Strings are
+// skipped (with their escapes) so that brackets inside them do not count. A text that
+// is not JSON may be judged only roughly here; the parser reports it properly after.
+void check_depth(std::string_view body, std::size_t max_depth) {
+  std::size_t depth = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    const char c = body[i];
+    if (in_string) {
+      if (c == '\\') {
+        ++i;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > max_depth) {
+        throw InputError("json_too_deep", "JSON nested deeper than " + std::to_string(max_depth) + " levels", i);
+      }
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+}
+
+rapidjson::Document parse_object(std::string_view body, const JsonLimits& limits) {
+  check_depth(body, limits.max_depth);
+  rapidjson::Document document;
+  // Iterative parsing: no recursion whatever the input; full-precision numbers;
+  // invalid UTF-8 is a syntax error.
+  document.Parse<rapidjson::kParseIterativeFlag | rapidjson::kParseFullPrecisionFlag |
+                 rapidjson::kParseValidateEncodingFlag>(body.data(), body.size());
+  if (document.HasParseError()) {
+    throw InputError("invalid_json",
+                     std::string("invalid JSON: ") + rapidjson::GetParseError_En(document.GetParseError()),
+                     document.GetErrorOffset());
+  }
+  if (!document.IsObject()) throw InputError("wrong_type", "the request body must be a JSON object");
+  return document;
+}
+
+// Walks the members of the request object: each field is taken at most once, and
+// whatever was not taken at the end is an unknown field.
+class ObjectReader {
+ public:
+  explicit ObjectReader(const rapidjson::Value& object) : object_(object) {
+    for (auto m = object_.MemberBegin(); m != object_.MemberEnd(); ++m) {
+      const std::string name(m->name.GetString(), m->name.GetStringLength());
+      for (const std::string& seen : names_) {
+        if (seen == name) throw InputError("duplicate_field", "field '" + name + "' is given twice").in_field(name);
+      }
+      names_.push_back(name);
+    }
+    taken_.assign(names_.size(), false);
+  }
+
+  /// The member `name`, or nullptr when absent.
+  const rapidjson::Value* take(const char* name) {
+    for (std::size_t i = 0; i < names_.size(); ++i) {
+      if (names_[i] == name) {
+        taken_[i] = true;
+        return &(object_.MemberBegin() + static_cast<rapidjson::SizeType>(i))->value;
+      }
+    }
+    return nullptr;
+  }
+
+  const rapidjson::Value& require(const char* name) {
+    const rapidjson::Value* v = take(name);
+    if (v == nullptr) throw InputError("missing_field", std::string("field '") + name + "' is required").in_field(name);
+    return *v;
+  }
+
+  /// Throws `unknown_field` for the first member never taken.
+  void finish(const char* allowed) const {
+    for (std::size_t i = 0; i < names_.size(); ++i) {
+      if (!taken_[i]) {
+        throw InputError("unknown_field", "unknown field '" + names_[i] + "' (allowed: " + allowed + ")")
+            .in_field(names_[i]);
+      }
+    }
+  }
+
+ private:
+  const rapidjson::Value& object_;
+  std::vector<std::string> names_;
+  std::vector<bool> taken_;
+};
+
+InputError wrong_type(const std::string& field, const char* expected) {
+  return InputError("wrong_type", "'" + field + "' must be " + expected).in_field(field);
+}
+
+std::string read_string(const rapidjson::Value& v, const std::string& field) {
+  if (!v.IsString()) throw wrong_type(field, "a string");
+  return std::string(v.GetString(), v.GetStringLength());
+}
+
+std::vector<std::string> read_strings(const rapidjson::Value& v, const std::string& field) {
+  if (!v.IsArray()) throw wrong_type(field, "an array of strings");
+  std::vector<std::string> out;
+  out.reserve(v.Size());
+  for (rapidjson::SizeType i = 0; i < v.Size(); ++i) {
+    out.push_back(read_string(v[i], field + "[" + std::to_string(i) + "]"));
+  }
+  return out;
+}
+
+std::vector<int> read_ints(const rapidjson::Value& v, const std::string& field) {
+  if (!v.IsArray()) throw wrong_type(field, "an array of integers");
+  std::vector<int> out;
+  out.reserve(v.Size());
+  for (rapidjson::SizeType i = 0; i < v.Size(); ++i) {
+    if (!v[i].IsInt()) throw wrong_type(field + "[" + std::to_string(i) + "]", "an integer");
+    out.push_back(v[i].GetInt());
+  }
+  return out;
+}
+
+// timeout_ms: a non-negative finite number of milliseconds; 0 means no limit.
+double read_timeout_seconds(const rapidjson::Value& v) {
+  if (!v.IsNumber()) throw wrong_type("timeout_ms", "a number of milliseconds");
+  const double ms = v.GetDouble();
+  if (!std::isfinite(ms) || ms < 0) {
+    throw InputError("invalid_value", "'timeout_ms' must be a non-negative number").in_field("timeout_ms");
+  }
+  return ms / 1000.0;
+}
+
+// ---- encoding -------------------------------------------------------------
+
+Writer& configure(Writer& w) {
+  w.SetMaxDecimalPlaces(3);
+  return w;
+}
+
+void write_string(Writer& w, std::string_view s) { w.String(s.data(), static_cast<rapidjson::SizeType>(s.size())); }
+
+void write_key(Writer& w, const char* key) { w.Key(key); }
+
+void write_milliseconds(Writer& w, double ms) { w.Double(std::isfinite(ms) && ms > 0 ? ms : 0.0); }
+
+void write_polynomials(Writer& w, const std::vector<Polynomial>& polynomials) {
+  w.StartArray();
+  for (const Polynomial& p : polynomials) write_string(w, to_string(p));
+  w.EndArray();
+}
+
+void write_stats_members(Writer& w, const BuchbergerStats& s) {
+  write_key(w, "pairs");
+  w.Uint64(s.pairs_created);
+  write_key(w, "product_criterion");
+  w.Uint64(s.product_criterion);
+  write_key(w, "chain_criterion");
+  w.Uint64(s.chain_criterion);
+  write_key(w, "reductions");
+  w.Uint64(s.reductions);
+  write_key(w, "zero_reductions");
+  w.Uint64(s.zero_reductions);
+  write_key(w, "reduction_steps");
+  w.Uint64(s.reduction_steps);
+  write_key(w, "max_degree");
+  w.Int(s.max_degree);
+  write_key(w, "basis_size");
+  w.Uint64(s.basis_size);
+  write_key(w, "groebner_ms");
+  write_milliseconds(w, s.elapsed_ms);
+}
+
+std::string finish(const rapidjson::StringBuffer& buffer) { return std::string(buffer.GetString(), buffer.GetSize()); }
+
+}  // namespace
+
+ImplicitizeRequest decode_implicitize_request(std::string_view body, const JsonLimits& limits) {
+  const rapidjson::Document document = parse_object(body, limits);
+  ObjectReader reader(document);
+  ImplicitizeRequest request;
+  request.x = read_string(reader.require("x"), "x");
+  request.y = read_string(reader.require("y"), "y");
+  request.z = read_string(reader.require("z"), "z");
+  if (const auto* v = reader.take("parameters")) request.parameters = read_strings(*v, "parameters");
+  if (const auto* v = reader.take("method")) request.method = read_string(*v, "method");
+  if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = read_timeout_seconds(*v);
+  reader.finish("x, y, z, parameters, method, timeout_ms");
+  return request;
+}
+
+GroebnerRequest decode_groebner_request(std::string_view body, const JsonLimits& limits) {
+  const rapidjson::Document document = parse_object(body, limits);
+  ObjectReader reader(document);
+  GroebnerRequest request;
+  request.polynomials = read_strings(reader.require("polynomials"), "polynomials");
+  if (const auto* v = reader.take("variables")) request.variables = read_strings(*v, "variables");
+  if (const auto* v = reader.take("order")) request.order = read_string(*v, "order");
+  if (const auto* v = reader.take("weights")) request.weights = read_ints(*v, "weights");
+  if (const auto* v = reader.take("eliminate")) request.eliminate = read_strings(*v, "eliminate");
+  if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = read_timeout_seconds(*v);
+  reader.finish("polynomials, variables, order, weights, eliminate, timeout_ms");
+  return request;
+}
+
+std::string encode_implicitize_response(const ImplicitizeResult& result) {
+  rapidjson::StringBuffer buffer;
+  Writer w(buffer);
+  configure(w);
+  w.StartObject();
+  write_key(w, "implicit");
+  write_string(w, to_string(result.implicit));
+  write_key(w, "degree");
+  w.Int(result.degree);
+  write_key(w, "variables");
+  w.StartArray();
+  for (const std::string& v : result.implicit.ring()->variables()) write_string(w, v);
+  w.EndArray();
+  write_key(w, "method");
+  write_string(w, result.method);
+  write_key(w, "verified");
+  w.Bool(result.verified);
+  write_key(w, "elapsed_ms");
+  write_milliseconds(w, result.elapsed_ms);
+  write_key(w, "stats");
+  w.StartObject();
+  write_stats_members(w, result.stats);
+  write_key(w, "verify_ms");
+  write_milliseconds(w, result.verify_ms);
+  w.EndObject();
+  write_key(w, "reproduce");
+  w.StartObject();
+  write_key(w, "singular");
+  write_string(w, result.singular_script);
+  write_key(w, "macaulay2");
+  write_string(w, result.macaulay2_script);
+  w.EndObject();
+  w.EndObject();
+  return finish(buffer);
+}
+
+std::string encode_groebner_response(const GroebnerAnswer& answer) {
+  rapidjson::StringBuffer buffer;
+  Writer w(buffer);
+  configure(w);
+  w.StartObject();
+  write_key(w, "basis");
+  write_polynomials(w, answer.basis);
+  write_key(w, "order");
+  write_string(w, answer.order);
+  write_key(w, "stats");
+  w.StartObject();
+  write_stats_members(w, answer.stats);
+  w.EndObject();
+  write_key(w, "elapsed_ms");
+  write_milliseconds(w, answer.elapsed_ms);
+  if (answer.elimination_ideal) {
+    write_key(w, "elimination_ideal");
+    write_polynomials(w, *answer.elimination_ideal);
+  }
+  w.EndObject();
+  return finish(buffer);
+}
+
+namespace {
+
+// The contract's error shape: {"error": {"code", "message", ...extra members}}.
+// `extra` writes the members that only some errors carry.
+template <typename WriteExtra>
+std::string encode_error_object(std::string_view code, std::string_view message, WriteExtra&& extra) {
+  rapidjson::StringBuffer buffer;
+  Writer w(buffer);
+  w.StartObject();
+  write_key(w, "error");
+  w.StartObject();
+  write_key(w, "code");
+  write_string(w, code);
+  write_key(w, "message");
+  write_string(w, message);
+  extra(w);
+  w.EndObject();
+  w.EndObject();
+  return finish(buffer);
+}
+
+}  // namespace
+
+std::string encode_error(const InputError& error) {
+  return encode_error_object(error.code(), error.what(), [&](Writer& w) {
+    if (error.position()) {
+      write_key(w, "position");
+      w.Uint64(*error.position());
+    }
+    if (!error.field().empty()) {
+      write_key(w, "field");
+      write_string(w, error.field());
+    }
+  });
+}
+
+std::string encode_error(const NoSingleEquation& error) {
+  return encode_error_object("no_single_equation", error.what(), [&](Writer& w) {
+    write_key(w, "generators");
+    w.StartArray();
+    for (const std::string& g : error.generators()) write_string(w, g);
+    w.EndArray();
+  });
+}
+
+std::string encode_error(const LimitExceeded& error) {
+  return encode_error_object(limit_error_code(error.limit()), error.what(), [&](Writer& w) {
+    write_key(w, "limit");
+    write_string(w, to_string(error.limit()));
+  });
+}
+
+std::string encode_error(std::string_view code, std::string_view message) {
+  return encode_error_object(code, message, [](Writer&) {});
+}
+
+const char* limit_error_code(Limit limit) {
+  switch (limit) {
+    case Limit::time:
+      return "time_limit_exceeded";
+    case Limit::size:
+      return "size_limit_exceeded";
+    case Limit::cancelled:
+      return "cancelled";
+  }
+  return "limit_exceeded";
+}
+
+}  // namespace implicitizer

@@ -1,0 +1,189 @@
+#!/usr/bin/env bash
+# End-to-end checks of build/bin/implicitizer: real answers, exit statuses, messages
+# and JSON shapes (docs/cli.md). Usage: cli_test.sh PATH/TO/implicitizer
+# Registered with ctest as cli.exit_codes (clients/cli/CMakeLists.txt).
+set -u
+
+BIN=${1:?usage: cli_test.sh PATH/TO/implicitizer}
+SHARED=${IMPLICITIZER_SHARED_DIR:-$(cd "$(dirname "$0")/../../.." && pwd)/shared}
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+
+passed=0
+failed=0
+fail() {
+  echo "FAIL: $1"
+  echo "  stdout: $(head -c 600 "$WORK/out")"
+  echo "  stderr: $(head -c 600 "$WORK/err")"
+  failed=$((failed + 1))
+}
+pass() { passed=$((passed + 1)); }
+
+# run ARGS...: runs the binary, leaving stdout, stderr and the status in $WORK.
+run() {
+  "$BIN" "$@" >"$WORK/out" 2>"$WORK/err"
+  echo $? >"$WORK/rc"
+}
+status() { cat "$WORK/rc"; }
+
+# expect NAME STATUS STDOUT ARGS...: exact status and exact stdout.
+expect() {
+  local name=$1 want_rc=$2 want_out=$3
+  shift 3
+  run "$@"
+  if [[ $(status) == "$want_rc" && $(cat "$WORK/out") == "$want_out" ]]; then pass; else
+    fail "$name (want status $want_rc and stdout '$want_out', got status $(status))"
+  fi
+}
+
+# expect_status NAME STATUS STDERR_PATTERN ARGS...: status, and stderr matching an extended regex.
+expect_status() {
+  local name=$1 want_rc=$2 pattern=$3
+  shift 3
+  run "$@"
+  if [[ $(status) == "$want_rc" ]] && grep -Eq -- "$pattern" "$WORK/err"; then pass; else
+    fail "$name (want status $want_rc and stderr matching /$pattern/, got status $(status))"
+  fi
+}
+
+# expect_json NAME STATUS PYTHON_CONDITION ARGS...: stdout is one JSON object `j`
+# for which the condition holds.
+expect_json() {
+  local name=$1 want_rc=$2 condition=$3
+  shift 3
+  run "$@"
+  if [[ $(status) == "$want_rc" ]] && python3 -c "
+import json, sys
+j = json.load(sys.stdin)
+sys.exit(0 if ($condition) else 1)" <"$WORK/out"; then pass; else
+    fail "$name (want status $want_rc and JSON with $condition, got status $(status))"
+  fi
+}
+
+# ---- implicitize: answers ----
+expect "sphere" 0 "x^2+y^2+z^2-1" implicitize \
+  --x "2*s/(1+s^2+t^2)" --y "2*t/(1+s^2+t^2)" --z "(s^2+t^2-1)/(1+s^2+t^2)"
+expect "plane" 0 "x-y-z" implicitize --x s+t --y s --z t
+expect "whitney umbrella" 0 "y^2*z-x^2" implicitize --x "s*t" --y s --z "t^2"
+expect "explicit parameters" 0 "x-y-z" implicitize --x u+v --y u --z v --params u,v
+expect "method groebner" 0 "x-y-z" implicitize --x s+t --y s --z t --method groebner
+expect "juxtaposition" 0 "x-2*y" implicitize --x 2s --y s --z t
+expect "decimals are exact" 0 "4*x-y" implicitize --x 0.25s --y s --z t
+expect "flag=value form" 0 "x-y-z" implicitize --x=s+t --y=s --z=t
+for strategy in normal sugar; do
+  for criteria in gm seed product none; do
+    expect "whitney, $strategy/$criteria" 0 "y^2*z-x^2" implicitize --x "s*t" --y s --z "t^2" \
+      --strategy $strategy --criteria $criteria
+  done
+done
+
+# ---- implicitize: refusals ----
+expect_status "twisted cubic is a curve" 4 "no_single_equation" implicitize --x t --y "t^2" --z "t^3"
+expect_status "curve lists generators" 4 "x\^2-y" implicitize --x t --y "t^2" --z "t^3"
+expect_status "a point" 4 "no_single_equation" implicitize --x 1 --y 2 --z 3
+expect_status "parse error with position" 3 "^error: unexpected_character at position 3 in y" \
+  implicitize --x s --y 's+t$' --z t
+expect_status "missing parenthesis" 3 "missing_parenthesis at position [0-9]+ in x" implicitize --x "(s+t" --y s --z t
+expect_status "parameter named x" 3 "parameter_is_space_variable" implicitize --x s --y t --z x
+expect_status "explicit parameter x" 3 "parameter_is_space_variable" implicitize --x s --y t --z s --params s,x
+expect_status "zero denominator" 3 "division_by_zero" implicitize --x "1/(s-s)" --y s --z t
+expect_status "chained exponent" 3 "chained_exponent" implicitize --x "s^2^3" --y s --z t
+expect_status "exponent not integer" 3 "exponent_not_integer" implicitize --x "s^t" --y s --z t
+expect_status "two names need *" 3 "missing_operator" implicitize --x "s t" --y s --z t
+expect_status "unknown flag" 2 "unknown option --bogus" implicitize --x s --y t --z s --bogus
+expect_status "missing value" 2 "needs a value" implicitize --x s --y t --z
+expect_status "missing --z" 2 "missing --z" implicitize --x s --y t
+expect_status "bad timeout" 2 "timeout" implicitize --x s+t --y s --z t --timeout abc
+expect_status "zero timeout" 2 "timeout" implicitize --x s+t --y s --z t --timeout 0
+expect_status "negative timeout" 2 "timeout" implicitize --x s+t --y s --z t --timeout -1
+expect_status "resultant not built" 2 "not built yet" implicitize --x s+t --y s --z t --method resultant
+expect_status "interpolation not built" 2 "not built yet" implicitize --x s+t --y s --z t --method interpolation
+expect_status "unknown method" 2 "unknown method" implicitize --x s+t --y s --z t --method magic
+expect_status "bad strategy" 2 "strategy" implicitize --x s+t --y s --z t --strategy fast
+expect_status "bad criteria" 2 "criteria" implicitize --x s+t --y s --z t --criteria all
+expect_status "bad max-terms" 2 "max-terms" implicitize --x s+t --y s --z t --max-terms -3
+expect_status "stray argument" 2 "unexpected argument" implicitize --x s+t --y s --z t extra
+
+# A hard surface cannot finish in a millisecond: the time limit, named.
+HARD=$(python3 -c "
+import json, sys
+for s in json.load(open(sys.argv[1])):
+    if s['name'] == 'tp_22':
+        print(s['x']); print(s['y']); print(s['z'])" "$SHARED/bench/surfaces_hard.json" 2>/dev/null)
+if [[ -n $HARD ]]; then
+  { read -r HX; read -r HY; read -r HZ; } <<<"$HARD"
+  expect_status "timeout on tp_22" 5 "time" implicitize --x "$HX" --y "$HY" --z "$HZ" --timeout 0.001
+  expect_json "timeout JSON" 5 "j['error']['code'] == 'time_limit_exceeded' and j['error']['limit'] == 'time'" \
+    implicitize --x "$HX" --y "$HY" --z "$HZ" --timeout 0.001 --json
+  expect_status "size limit on tp_22" 5 "size" implicitize --x "$HX" --y "$HY" --z "$HZ" --max-terms 5
+else
+  fail "tp_22 not found in $SHARED/bench/surfaces_hard.json"
+fi
+
+# ---- implicitize --json ----
+expect_json "implicitize JSON shape" 0 "
+j['implicit'] == 'x-y-z' and j['degree'] == 1 and j['variables'] == ['x','y','z']
+and j['method'] == 'groebner' and j['verified'] is True and isinstance(j['elapsed_ms'], (int, float))
+and all(k in j['stats'] for k in ['pairs','product_criterion','chain_criterion','reductions',
+  'zero_reductions','reduction_steps','max_degree','basis_size','verify_ms'])
+and 'eliminate' in j['reproduce']['singular'] and 'eliminate' in j['reproduce']['macaulay2']" \
+  implicitize --x s+t --y s --z t --json
+expect_json "parse error JSON" 3 "
+j['error']['code'] == 'unexpected_character' and j['error']['position'] == 3 and j['error']['field'] == 'y'" \
+  implicitize --x s --y 's+t$' --z t --json
+expect_json "no single equation JSON" 4 "
+j['error']['code'] == 'no_single_equation' and 'x^2-y' in j['error']['generators']" \
+  implicitize --x t --y "t^2" --z "t^3" --json
+expect_json "unknown method JSON" 2 "j['error']['code'] == 'unknown_method' and j['error']['field'] == 'method'" \
+  implicitize --x s+t --y s --z t --method resultant --json
+
+# ---- groebner ----
+expect "lex basis" 0 $'y^4+y\nx-y^2' groebner --order lex x^2+y y^2-x
+expect "grevlex basis" 0 $'y^2-x\nx^2+y' groebner x^2+y y^2-x
+expect "explicit variable order" 0 $'x^4-x\ny+x^2' groebner --order lex --vars y,x x^2+y y^2-x
+expect "monic with rationals" 0 "x-3/2" groebner "2x-3"
+expect "unit ideal" 0 "1" groebner x x-1
+expect "leading minus is not a flag" 0 $'y^2-x\nx^2-y' groebner -- -x^2+y y^2-x
+expect "leading minus without --" 0 $'y^2-x\nx^2-y' groebner -x^2+y y^2-x
+expect "cyclic 3 under grevlex" 0 $'x+y+z\ny^2+y*z+z^2\nz^3-1' groebner --vars x,y,z x+y+z "x*y+y*z+z*x" "x*y*z-1"
+expect "elimination" 0 "x^2*z-y^2-2*y*z-z^2" groebner --eliminate s,t "x-s-t" "y-s*t" "z-s^2"
+expect "weighted order" 0 $'x^2+y\ny^2-x' groebner --weights 1,2 x^2+y y^2-x
+for criteria in gm seed product none; do
+  expect "cyclic 3, criteria $criteria" 0 $'x+y+z\ny^2+y*z+z^2\nz^3-1' groebner --criteria $criteria \
+    x+y+z "x*y+y*z+z*x" "x*y*z-1"
+done
+expect_status "groebner parse error" 3 "unexpected_end at position 2 in polynomials\[1\]" groebner x+y "x+"
+expect_status "1/2x is 1/(2x)" 3 "non_constant_denominator" groebner 1/2x
+expect_status "unknown variable" 3 "unknown_variable" groebner --vars x,y x+z
+expect_status "unknown eliminated variable" 3 "unknown_variable" groebner --eliminate w x+y
+expect_status "duplicate variable" 3 "invalid_variables" groebner --vars x,x x+y
+expect_status "wrong weight count" 3 "invalid_order" groebner --weights 1,2,3 x+y
+expect_status "bad order" 2 "order" groebner --order revlex x+y
+expect_status "bad weights" 2 "weights" groebner --weights 1,a x+y
+expect_status "no polynomials" 2 "no polynomials" groebner --order lex
+expect_json "groebner JSON shape" 0 "
+j['basis'] == ['y^2-x', 'x^2+y'] and j['order'] == 'grevlex' and isinstance(j['elapsed_ms'], (int, float))
+and all(k in j['stats'] for k in ['pairs','product_criterion','chain_criterion','reductions','zero_reductions'])
+and 'elimination_ideal' not in j" groebner --json x^2+y y^2-x
+expect_json "elimination JSON" 0 "
+j['elimination_ideal'] == ['x^2*z-y^2-2*y*z-z^2'] and 'x^2*z-y^2-2*y*z-z^2' in j['basis']
+and j['order'].startswith('weighted(1,1,0,0,0;')" groebner --json --eliminate s,t "x-s-t" "y-s*t" "z-s^2"
+expect_json "groebner error JSON" 3 "j['error']['code'] == 'unknown_variable' and j['error']['field'] == 'polynomials[0]'" \
+  groebner --json --vars x,y x+z
+
+# ---- the program itself ----
+expect_status "unknown command" 2 "unknown command" frobnicate
+expect_status "no command" 2 "usage" ""
+run
+if [[ $(status) == 2 ]]; then pass; else fail "no arguments (want status 2)"; fi
+run --help
+if [[ $(status) == 0 ]] && grep -q "implicitize" "$WORK/out" && grep -q "groebner" "$WORK/out"; then pass; else fail "--help"; fi
+run help groebner
+if [[ $(status) == 0 ]] && grep -q -- "--eliminate" "$WORK/out"; then pass; else fail "help groebner"; fi
+run implicitize --help
+if [[ $(status) == 0 ]] && grep -q -- "--criteria" "$WORK/out"; then pass; else fail "implicitize --help"; fi
+run --version
+if [[ $(status) == 0 ]] && grep -Eq "^implicitizer [0-9]+\.[0-9]+\.[0-9]+$" "$WORK/out"; then pass; else fail "--version"; fi
+
+echo "$passed passed, $failed failed"
+[[ $failed == 0 ]]

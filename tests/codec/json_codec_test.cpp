@@ -1,0 +1,174 @@
+// Tests of server/codec: the JSON decoders' refusals, the encoders' shapes, and the
+// request answerers the CLI and the server share.
+#include "implicitizer/codec/json_codec.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "implicitizer/codec/groebner_request.hpp"
+#include "implicitizer/codec/implicitize_request.hpp"
+#include "implicitizer/core/errors.hpp"
+
+namespace implicitizer {
+namespace {
+
+// The InputError `f` throws; fails the test when it throws nothing.
+template <class F>
+InputError input_error_of(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no InputError thrown";
+  return InputError("none", "none");
+}
+
+TEST(DecodeImplicitizeRequest, ReadsEveryField) {
+  const ImplicitizeRequest r = decode_implicitize_request(
+      R"({"x":"s+t","y":"s","z":"t","parameters":["s","t"],"method":"groebner","timeout_ms":1500})");
+  EXPECT_EQ(r.x, "s+t");
+  EXPECT_EQ(r.y, "s");
+  EXPECT_EQ(r.z, "t");
+  ASSERT_TRUE(r.parameters.has_value());
+  EXPECT_EQ(*r.parameters, (std::vector<std::string>{"s", "t"}));
+  EXPECT_EQ(r.method, "groebner");
+  ASSERT_TRUE(r.timeout_seconds.has_value());
+  EXPECT_DOUBLE_EQ(*r.timeout_seconds, 1.5);
+}
+
+TEST(DecodeImplicitizeRequest, OptionalFieldsDefault) {
+  const ImplicitizeRequest r = decode_implicitize_request(R"({"x":"s","y":"t","z":"s*t"})");
+  EXPECT_FALSE(r.parameters.has_value());
+  EXPECT_EQ(r.method, "auto");
+  EXPECT_FALSE(r.timeout_seconds.has_value());
+}
+
+TEST(DecodeImplicitizeRequest, RefusesBadBodies) {
+  EXPECT_EQ(input_error_of([] { decode_implicitize_request(""); }).code(), "invalid_json");
+  const InputError syntax = input_error_of([] { decode_implicitize_request(R"({"x": "s",})"); });
+  EXPECT_EQ(syntax.code(), "invalid_json");
+  EXPECT_TRUE(syntax.position().has_value());
+  EXPECT_EQ(input_error_of([] { decode_implicitize_request("[1]"); }).code(), "wrong_type");
+  EXPECT_EQ(input_error_of([] { decode_implicitize_request("\"x\""); }).code(), "wrong_type");
+  EXPECT_EQ(input_error_of([] { decode_implicitize_request("{\"x\":\"\xff\",\"y\":\"s\",\"z\":\"t\"}"); }).code(),
+            "invalid_json");
+}
+
+TEST(DecodeImplicitizeRequest, NamesTheOffendingField) {
+  const InputError missing = input_error_of([] { decode_implicitize_request(R"({"x":"s","y":"t"})"); });
+  EXPECT_EQ(missing.code(), "missing_field");
+  EXPECT_EQ(missing.field(), "z");
+  const InputError type = input_error_of([] { decode_implicitize_request(R"({"x":1,"y":"t","z":"s"})"); });
+  EXPECT_EQ(type.code(), "wrong_type");
+  EXPECT_EQ(type.field(), "x");
+  const InputError element =
+      input_error_of([] { decode_implicitize_request(R"({"x":"s","y":"t","z":"s","parameters":["s",2]})"); });
+  EXPECT_EQ(element.code(), "wrong_type");
+  EXPECT_EQ(element.field(), "parameters[1]");
+  const InputError unknown =
+      input_error_of([] { decode_implicitize_request(R"({"x":"s","y":"t","z":"s","timeout":5})"); });
+  EXPECT_EQ(unknown.code(), "unknown_field");
+  EXPECT_EQ(unknown.field(), "timeout");
+  const InputError twice = input_error_of([] { decode_implicitize_request(R"({"x":"s","x":"t","y":"t","z":"s"})"); });
+  EXPECT_EQ(twice.code(), "duplicate_field");
+  const InputError negative =
+      input_error_of([] { decode_implicitize_request(R"({"x":"s","y":"t","z":"s","timeout_ms":-1})"); });
+  EXPECT_EQ(negative.code(), "invalid_value");
+  EXPECT_EQ(negative.field(), "timeout_ms");
+}
+
+TEST(DecodeImplicitizeRequest, RefusesDeepNestingWithoutRecursing) {
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  EXPECT_EQ(input_error_of([&] { decode_implicitize_request(deep); }).code(), "json_too_deep");
+  // Brackets inside strings do not count.
+  const std::string in_string = R"({"x":"[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[s","y":"t","z":"s"})";
+  EXPECT_EQ(decode_implicitize_request(in_string).y, "t");
+}
+
+TEST(DecodeGroebnerRequest, ReadsEveryField) {
+  const GroebnerRequest r = decode_groebner_request(
+      R"({"polynomials":["x-s","y-s^2"],"variables":["s","x","y"],"order":"lex","weights":[1,2,3],)"
+      R"("eliminate":["s"],"timeout_ms":0})");
+  EXPECT_EQ(r.polynomials, (std::vector<std::string>{"x-s", "y-s^2"}));
+  EXPECT_EQ(*r.variables, (std::vector<std::string>{"s", "x", "y"}));
+  EXPECT_EQ(r.order, "lex");
+  EXPECT_EQ(*r.weights, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(*r.eliminate, (std::vector<std::string>{"s"}));
+  EXPECT_DOUBLE_EQ(*r.timeout_seconds, 0.0);
+}
+
+TEST(DecodeGroebnerRequest, RefusesBadFields) {
+  EXPECT_EQ(input_error_of([] { decode_groebner_request("{}"); }).code(), "missing_field");
+  EXPECT_EQ(input_error_of([] { decode_groebner_request(R"({"polynomials":"x"})"); }).field(), "polynomials");
+  EXPECT_EQ(input_error_of([] { decode_groebner_request(R"({"polynomials":["x"],"weights":[1.5]})"); }).field(),
+            "weights[0]");
+  EXPECT_EQ(input_error_of([] { decode_groebner_request(R"({"polynomials":["x"],"ordering":"lex"})"); }).code(),
+            "unknown_field");
+}
+
+TEST(AnswerGroebnerRequest, ReducedBasisAndElimination) {
+  GroebnerRequest r;
+  r.polynomials = {"x^2+y", "y^2-x"};
+  r.order = "lex";
+  const GroebnerAnswer a = answer_groebner_request(r);
+  const std::string json = encode_groebner_response(a);
+  EXPECT_EQ(json.rfind(R"({"basis":["y^4+y","x-y^2"],"order":"lex","stats":{"pairs":)", 0), 0u) << json;
+  EXPECT_EQ(json.find("elimination_ideal"), std::string::npos);
+
+  GroebnerRequest e;
+  e.polynomials = {"x-s-t", "y-s*t", "z-s^2"};
+  e.eliminate = std::vector<std::string>{"s", "t"};
+  const GroebnerAnswer b = answer_groebner_request(e);
+  ASSERT_TRUE(b.elimination_ideal.has_value());
+  EXPECT_NE(encode_groebner_response(b).find(R"("elimination_ideal":["x^2*z-y^2-2*y*z-z^2"]})"), std::string::npos);
+}
+
+TEST(AnswerGroebnerRequest, ErrorsNameTheirField) {
+  GroebnerRequest r;
+  r.polynomials = {"x+y", "x+$"};
+  const InputError parse = input_error_of([&] { answer_groebner_request(r); });
+  EXPECT_EQ(parse.field(), "polynomials[1]");
+  EXPECT_EQ(parse.position(), 2u);
+  r.polynomials = {"x+y"};
+  r.eliminate = std::vector<std::string>{"w"};
+  EXPECT_EQ(input_error_of([&] { answer_groebner_request(r); }).field(), "eliminate[0]");
+  r.eliminate = std::vector<std::string>{"x", "y"};
+  EXPECT_EQ(input_error_of([&] { answer_groebner_request(r); }).code(), "invalid_variables");
+  r.eliminate.reset();
+  r.polynomials.clear();
+  EXPECT_EQ(input_error_of([&] { answer_groebner_request(r); }).code(), "empty_input");
+}
+
+TEST(AnswerImplicitizeRequest, EncodesTheContractShape) {
+  ImplicitizeRequest r;
+  r.x = "s+t";
+  r.y = "s";
+  r.z = "t";
+  const std::string json = encode_implicitize_response(answer_implicitize_request(r));
+  EXPECT_EQ(json.rfind(R"({"implicit":"x-y-z","degree":1,"variables":["x","y","z"],"method":"groebner",)"
+                       R"("verified":true,"elapsed_ms":)",
+                       0),
+            0u)
+      << json;
+  EXPECT_NE(json.find(R"("reproduce":{"singular":")"), std::string::npos);
+  r.method = "resultant";
+  const InputError method = input_error_of([&] { answer_implicitize_request(r); });
+  EXPECT_EQ(method.code(), "unknown_method");
+  EXPECT_EQ(method.field(), "method");
+}
+
+TEST(EncodeError, Shapes) {
+  EXPECT_EQ(encode_error(InputError("unexpected_character", "bad \"$\"", 3).in_field("y")),
+            R"({"error":{"code":"unexpected_character","message":"bad \"$\"","position":3,"field":"y"}})");
+  EXPECT_EQ(encode_error(InputError("missing_field", "no")), R"({"error":{"code":"missing_field","message":"no"}})");
+  EXPECT_EQ(encode_error(NoSingleEquation("curve", {"x^2-y", "y^2-x*z"})),
+            R"({"error":{"code":"no_single_equation","message":"curve","generators":["x^2-y","y^2-x*z"]}})");
+  EXPECT_EQ(encode_error(LimitExceeded(Limit::time, "slow")),
+            R"({"error":{"code":"time_limit_exceeded","message":"slow","limit":"time"}})");
+  EXPECT_EQ(encode_error("not_found", "no such path"), R"({"error":{"code":"not_found","message":"no such path"}})");
+}
+
+}  // namespace
+}  // namespace implicitizer
