@@ -76,6 +76,9 @@ TEST(ExpressionErrors, ExponentTooLarge) {
   limits.max_exponent = 10;
   EXPECT_TRUE(rejects("y+x^11", "exponent_too_large", 4, limits));
   EXPECT_NO_THROW(parse_expression("x^10", limits));
+  // Leading zeros count for nothing: x^0000000002 is x^2, x^00001001 still too large.
+  EXPECT_NO_THROW(parse_expression("x^0000000002"));
+  EXPECT_TRUE(rejects("x^00000000001001", "exponent_too_large", 2));
 }
 
 TEST(ExpressionErrors, ChainedExponentIsAmbiguous) {
@@ -98,6 +101,9 @@ TEST(ExpressionErrors, IdentifierTooLong) {
 TEST(ExpressionErrors, UnexpectedCharacter) {
   EXPECT_TRUE(rejects("x+\xc3\xa9", "unexpected_character", 2));  // é in UTF-8
   EXPECT_TRUE(rejects("\xff", "unexpected_character", 0));
+  // Latin-1 letters are not identifier characters, whatever the C locale says.
+  EXPECT_TRUE(rejects("\xe9", "unexpected_character", 0));
+  EXPECT_TRUE(rejects("x\xe9", "unexpected_character", 1));
   EXPECT_TRUE(rejects("x\x80", "unexpected_character", 1));
   EXPECT_TRUE(rejects("x=y", "unexpected_character", 1));
   EXPECT_TRUE(rejects("x,y", "unexpected_character", 1));

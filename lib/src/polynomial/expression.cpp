@@ -1,6 +1,5 @@
 #include "implicitizer/polynomial/expression.hpp"
 
-#include <cctype>
 #include <set>
 
 #include "implicitizer/core/errors.hpp"
@@ -17,9 +16,11 @@ struct Token {
   std::string_view text;
 };
 
-bool is_identifier_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool is_identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+// ASCII only, whatever the C locale says: the contract's identifiers are
+// [A-Za-z_][A-Za-z0-9_]*, and std::isalpha accepts bytes like 0xE9 under Latin-1 locales.
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_identifier_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+bool is_identifier_char(char c) { return is_identifier_start(c) || is_digit(c); }
 
 std::string describe(char c) {
   const auto u = static_cast<unsigned char>(c);
@@ -268,12 +269,15 @@ class Parser {
     if (!integer_literal) {
       throw InputError("exponent_not_integer", "an exponent must be a non-negative integer literal", current_.start);
     }
-    if (current_.text.size() > 9 || std::stoul(std::string(current_.text)) > limits_.max_exponent) {
+    // Leading zeros do not make an exponent large (x^0002 is x^2).
+    std::string_view digits = current_.text;
+    while (digits.size() > 1 && digits.front() == '0') digits.remove_prefix(1);
+    if (digits.size() > 9 || std::stoul(std::string(digits)) > limits_.max_exponent) {
       throw InputError("exponent_too_large", "exponent larger than " + std::to_string(limits_.max_exponent),
                        current_.start);
     }
     auto e = make(Expression::Kind::power, at);
-    e->exponent = static_cast<unsigned>(std::stoul(std::string(current_.text)));
+    e->exponent = static_cast<unsigned>(std::stoul(std::string(digits)));
     e->children.push_back(std::move(base));
     advance();
     if (current_.kind == Token::Kind::caret) {
