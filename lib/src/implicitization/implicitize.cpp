@@ -49,8 +49,8 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
   for (const auto& c : p.coordinates) l = lcm(l, c.denominator());
   const bool saturate = !l.is_constant();
 
-  // Ring [w?, parameters, x, y, z]; eliminate() moves w and the parameters into the
-  // first block of a block order.
+  // Ring [w?, parameters, x, y, z]; eliminate() orders it by an elimination order for
+  // w and the parameters (Singular's (a(1,..,1,0,0,0),dp)).
   std::vector<std::string> names;
   std::vector<std::string> eliminated;
   if (saturate) names.push_back(fresh_name(params));
