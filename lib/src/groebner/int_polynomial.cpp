@@ -44,8 +44,10 @@ void remove_common_content(IntPolynomial& f, IntPolynomial& done) {
   }
 }
 
-// out ← fa·f[from_f..] − ga·(shift·g)[from_g..], merged in decreasing order.
-void combine(const Ring& ring, const Integer& fa, const IntPolynomial& f, std::size_t from_f, const Integer& ga,
+// out ← fa·f[from_f..] − ga·(shift·g)[from_g..], merged in decreasing order. f's
+// coefficients are moved out (f is consumed): copying them cost one malloc per term
+// per reduction step, a third of the time of a small elimination.
+void combine(const Ring& ring, const Integer& fa, IntPolynomial& f, std::size_t from_f, const Integer& ga,
              const std::int32_t* shift, const IntPolynomial& g, std::size_t from_g, IntPolynomial& out) {
   const std::size_t w = ring.monomial_size();
   out.coefficients.clear();
@@ -70,11 +72,8 @@ void combine(const Ring& ring, const Integer& fa, const IntPolynomial& f, std::s
       cmp = ring.compare(&f.monomials[i * w], shifted.data());
     }
     if (cmp > 0) {
-      if (scale_f) {
-        out.coefficients.emplace_back(fa * f.coefficients[i]);
-      } else {
-        out.coefficients.push_back(f.coefficients[i]);
-      }
+      out.coefficients.push_back(std::move(f.coefficients[i]));
+      if (scale_f) mpz_mul(out.coefficients.back().get_mpz_t(), out.coefficients.back().get_mpz_t(), fa.get_mpz_t());
       out.monomials.insert(out.monomials.end(), &f.monomials[i * w], &f.monomials[i * w] + w);
       ++i;
     } else if (cmp < 0) {
@@ -83,7 +82,8 @@ void combine(const Ring& ring, const Integer& fa, const IntPolynomial& f, std::s
       ++j;
       have_shifted = false;
     } else {
-      Integer c = scale_f ? Integer(fa * f.coefficients[i]) : f.coefficients[i];
+      Integer c = std::move(f.coefficients[i]);
+      if (scale_f) mpz_mul(c.get_mpz_t(), c.get_mpz_t(), fa.get_mpz_t());
       mpz_submul(c.get_mpz_t(), ga.get_mpz_t(), g.coefficients[j].get_mpz_t());
       if (c != 0) {
         out.coefficients.push_back(std::move(c));
