@@ -5,12 +5,14 @@ namespace implicitizer::cli {
 BuchbergerParams buchberger_params_from(const Arguments& arguments) {
   BuchbergerParams params;
   if (const auto strategy = arguments.value("strategy")) {
-    if (*strategy == "normal") {
+    if (*strategy == "auto") {
+      params.strategy = SelectionStrategy::automatic;
+    } else if (*strategy == "normal") {
       params.strategy = SelectionStrategy::normal;
     } else if (*strategy == "sugar") {
       params.strategy = SelectionStrategy::sugar;
     } else {
-      throw UsageError("--strategy must be normal or sugar, not '" + *strategy + "'");
+      throw UsageError("--strategy must be auto, normal or sugar, not '" + *strategy + "'");
     }
   }
   if (const auto criteria = arguments.value("criteria")) {

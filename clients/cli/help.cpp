@@ -16,7 +16,7 @@ commands:
                [--method auto|groebner|resultant|interpolation] [--timeout SECONDS] [--json]
   implicitizer groebner [--vars x,y,z] [--order lex|grlex|grevlex] [--weights 1,2,3]
                [--eliminate s,t] [--timeout SECONDS] [--json] F [F ...]
-  both also take --strategy normal|sugar, --criteria gm|seed|product|none, --max-terms N
+  both also take --strategy auto|normal|sugar, --criteria gm|seed|product|none, --max-terms N
 
 syntax: numbers are exact (0.25, 1e-30); + - * / ^ (** = ^); ^ binds tightest, so
   -x^2 = -(x^2); 2x is 2*x and binds tighter than * and /, so 1/2x = 1/(2x);
@@ -41,7 +41,8 @@ options:
                         not built yet (usage error)
   --timeout SECONDS     wall-time limit, > 0 (default: none)
   --max-terms N         largest number of terms of any intermediate polynomial (default 0 = none)
-  --strategy S          S-pair selection: sugar (default) or normal
+  --strategy S          S-pair selection: auto (default: sugar for elimination
+                        orders, normal otherwise), normal or sugar
   --criteria C          gm (default): product criterion + Gebauer-Moller chain criterion
                         seed: product criterion + Buchberger's chain criterion
                               (Theorem 1.6 of the seed thesis)
@@ -71,7 +72,7 @@ options:
                         first; --json shows both
   --timeout SECONDS     wall-time limit, > 0 (default: none)
   --max-terms N         largest number of terms of any intermediate polynomial (default 0 = none)
-  --strategy S          sugar (default) or normal
+  --strategy S          auto (default), normal or sugar
   --criteria C          gm (default), seed, product or none (see implicitize --help)
   --json                print the JSON object POST /v1/groebner returns
   -h, --help            this text

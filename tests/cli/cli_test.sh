@@ -70,7 +70,7 @@ expect "method groebner" 0 "x-y-z" implicitize --x s+t --y s --z t --method groe
 expect "juxtaposition" 0 "x-2*y" implicitize --x 2s --y s --z t
 expect "decimals are exact" 0 "4*x-y" implicitize --x 0.25s --y s --z t
 expect "flag=value form" 0 "x-y-z" implicitize --x=s+t --y=s --z=t
-for strategy in normal sugar; do
+for strategy in auto normal sugar; do
   for criteria in gm seed product none; do
     expect "whitney, $strategy/$criteria" 0 "y^2*z-x^2" implicitize --x "s*t" --y s --z "t^2" \
       --strategy $strategy --criteria $criteria

@@ -80,7 +80,7 @@ class BuchbergerDriver {
   void insert(IntPolynomial p, std::int32_t sugar) {
     BasisEntry e;
     e.mask = ring_->divisor_mask(p.monomials.data());
-    e.lead_degree = ring_->order_degree(p.monomials.data());
+    e.lead_degree = ring_->sugar_degree(p.monomials.data());
     e.sugar = std::max(sugar, e.lead_degree);
     e.polynomial = std::move(p);
     basis_.push_back(std::move(e));
@@ -92,7 +92,7 @@ class BuchbergerDriver {
   std::int32_t sugar_of(const IntPolynomial& p) const {
     const std::size_t w = ring_->monomial_size();
     std::int32_t d = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) d = std::max(d, ring_->order_degree(&p.monomials[i * w]));
+    for (std::size_t i = 0; i < p.size(); ++i) d = std::max(d, ring_->sugar_degree(&p.monomials[i * w]));
     return d;
   }
 

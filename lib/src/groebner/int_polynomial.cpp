@@ -130,7 +130,7 @@ IntPolynomial reduce(const Ring& ring, IntPolynomial f, const std::vector<Reduce
     }
     const IntPolynomial& g = *r->polynomial;
     ring.divide(lead, g.monomials.data(), shift.data());
-    if (sugar != nullptr) *sugar = std::max(*sugar, r->sugar + ring.order_degree(shift.data()));
+    if (sugar != nullptr) *sugar = std::max(*sugar, r->sugar + ring.sugar_degree(shift.data()));
     Integer d;
     mpz_gcd(d.get_mpz_t(), f.coefficients[start].get_mpz_t(), g.coefficients.front().get_mpz_t());
     const Integer fa = g.coefficients.front() / d;  // multiplies f (and the done part)

@@ -5,7 +5,7 @@
 namespace implicitizer::detail {
 
 bool SPairQueue::before(const SPair& a, const SPair& b) const {
-  if (params_.strategy == SelectionStrategy::sugar && a.sugar != b.sugar) return a.sugar < b.sugar;
+  if (use_sugar_ && a.sugar != b.sugar) return a.sugar < b.sugar;
   const int c = ring_.compare(a.lcm.data(), b.lcm.data());
   if (c != 0) return c < 0;
   return a.serial < b.serial;
@@ -19,7 +19,7 @@ SPair SPairQueue::make_pair(const std::vector<BasisEntry>& basis, std::size_t i,
   ring_.lcm(basis[i].lead(), basis[t].lead(), p.lcm.data());
   p.lcm_degree = ring_.total_degree(p.lcm.data());
   p.sugar = std::max(basis[i].sugar - basis[i].lead_degree, basis[t].sugar - basis[t].lead_degree) +
-            ring_.order_degree(p.lcm.data());
+            ring_.sugar_degree(p.lcm.data());
   p.serial = next_serial_++;
   ++stats_.pairs_created;
   return p;

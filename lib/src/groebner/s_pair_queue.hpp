@@ -35,7 +35,11 @@ struct SPair {
 class SPairQueue {
  public:
   SPairQueue(const Ring& ring, const BuchbergerParams& params, BuchbergerStats& stats)
-      : ring_(ring), params_(params), stats_(stats) {}
+      : ring_(ring),
+        params_(params),
+        stats_(stats),
+        use_sugar_(params.strategy == SelectionStrategy::sugar ||
+                   (params.strategy == SelectionStrategy::automatic && ring.is_elimination_order())) {}
 
   // Called after basis[t] was appended: forms the pairs (i, t), applies the
   // criteria of the chosen update, and marks elements made redundant.
@@ -58,6 +62,7 @@ class SPairQueue {
   const Ring& ring_;
   const BuchbergerParams& params_;
   BuchbergerStats& stats_;
+  bool use_sugar_;  // the strategy, with `automatic` resolved for this ring's order
   std::vector<SPair> heap_;                 // binary heap on before(); dead pairs removed lazily
   std::size_t alive_ = 0;
   std::unordered_set<std::uint64_t> pending_;  // keys of pairs still queued (Buchberger's criterion)

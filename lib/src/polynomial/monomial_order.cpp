@@ -1,5 +1,6 @@
 #include "implicitizer/polynomial/monomial_order.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "implicitizer/core/errors.hpp"
@@ -98,6 +99,27 @@ std::vector<std::vector<std::int32_t>> MonomialOrder::matrix(std::size_t n) cons
   }
   if (n == 0) rows.clear();
   return rows;
+}
+
+std::vector<std::int32_t> MonomialOrder::degree_weights(std::size_t n) const {
+  switch (kind_) {
+    case Kind::weighted:
+      if (weights_.size() == n && std::any_of(weights_.begin(), weights_.end(), [](int w) { return w > 0; })) {
+        return std::vector<std::int32_t>(weights_.begin(), weights_.end());
+      }
+      break;
+    case Kind::block: {
+      const std::size_t k = std::min(first_block_size_, n);
+      auto weights = first_->degree_weights(k);
+      weights.resize(n, 0);
+      return weights;
+    }
+    case Kind::lex:
+    case Kind::grlex:
+    case Kind::grevlex:
+      break;
+  }
+  return std::vector<std::int32_t>(n, 1);
 }
 
 std::string MonomialOrder::name() const {

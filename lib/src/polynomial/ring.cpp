@@ -19,6 +19,9 @@ RingPtr Ring::make(std::vector<std::string> variables, const MonomialOrder& orde
 Ring::Ring(std::vector<std::string> variables, const MonomialOrder& order)
     : variables_(std::move(variables)), order_(order), matrix_(order.matrix(variables_.size())) {
   key_size_ = matrix_.size();
+  degree_weights_ = order_.degree_weights(variables_.size());
+  is_elimination_order_ =
+      std::any_of(degree_weights_.begin(), degree_weights_.end(), [](std::int32_t w) { return w == 0; });
 }
 
 std::optional<std::size_t> Ring::index_of(const std::string& name) const {

@@ -50,6 +50,13 @@ class MonomialOrder {
   /// (`invalid_order`) when the description does not fit that many variables.
   std::vector<std::vector<std::int32_t>> matrix(std::size_t num_variables) const;
 
+  /// The weights of the degree this order refines first, for `num_variables`
+  /// variables: all ones for lex, grlex and grevlex (lex refines no degree; the total
+  /// degree is the natural one), the weights of a weighted order (all ones if they
+  /// are all zero), and for a block order the first block's degree weights followed
+  /// by zeros (the elimination degree). Buchberger's sugar is measured in it.
+  std::vector<std::int32_t> degree_weights(std::size_t num_variables) const;
+
   /// A readable name: `grevlex`, `weighted(1,2,3;grevlex)`, `block(2:grevlex|grevlex)`.
   std::string name() const;
 
