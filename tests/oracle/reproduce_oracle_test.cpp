@@ -1,0 +1,89 @@
+// Oracle: the reproduce scripts that implicitize() hands to the user
+// (ImplicitizeResult::singular_script and ::macaulay2_script) run unchanged in real
+// Singular and Macaulay2, print exactly one line, the implicit equation, and that
+// equation is ours up to a rational factor. Covers polynomial and rational surfaces,
+// rational coefficients (enneper) and parameters the scripts must rename because the
+// systems reserve their names.
+
+#include <gtest/gtest.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "implicitizer/implicitization/implicitize.hpp"
+#include "implicitizer/polynomial/parser.hpp"
+#include "oracle/oracle_support.hpp"
+
+namespace implicitizer {
+namespace {
+
+std::vector<testing::Surface> reproduce_surfaces() {
+  const std::vector<std::string> chosen = {"unit_sphere", "torus_R2_r1", "whitney_umbrella", "steiner_roman",
+                                           "enneper"};
+  std::vector<testing::Surface> out;
+  for (const auto& s : testing::read_surfaces(std::string(IMPLICITIZER_SHARED_DIR) + "/bench/surfaces_public.json")) {
+    for (const auto& name : chosen) {
+      if (s.name == name) out.push_back(s);
+    }
+  }
+  // Parameters named like Singular's and Macaulay2's own words (`ring`, `e`): the
+  // scripts rename them t1, t2. Degree 0: not stated, only compared with the oracles.
+  out.push_back({"reserved_parameter_names", "ring/(ring+e)", "e^2", "ring*e/3", 0});
+  return out;
+}
+
+// Whether the output of a reproduce script is exactly one line, our equation up to a factor.
+void expect_prints_our_equation(const testing::ScriptRun& run, const std::string& script, const Polynomial& ours) {
+  ASSERT_EQ(run.exit_code, 0) << script << run.describe();
+  const std::vector<std::string> lines = testing::non_empty_lines(run.out);
+  ASSERT_EQ(lines.size(), 1u) << "expected one generator\n" << script << run.describe();
+  Polynomial theirs = Polynomial(space_ring());
+  try {
+    theirs = parse_polynomial(lines[0], space_ring());
+  } catch (const std::exception& e) {
+    FAIL() << "cannot parse the output (" << e.what() << ")\n" << script << run.describe();
+  }
+  EXPECT_TRUE(testing::equal_up_to_scalar(ours, theirs)) << script;
+}
+
+class ReproduceOracle : public ::testing::TestWithParam<testing::Surface> {
+ protected:
+  ImplicitizeResult implicitize_surface() const {
+    const testing::Surface& s = GetParam();
+    ImplicitizeOptions options;
+    options.groebner.budget.set_timeout(30);
+    const ImplicitizeResult result = implicitize(parse_parametrization(s.x, s.y, s.z), options);
+    EXPECT_TRUE(result.verified);
+    if (s.degree > 0) {
+      EXPECT_EQ(result.degree, s.degree);
+    }
+    if (s.name == "reserved_parameter_names") {
+      EXPECT_NE(result.singular_script.find("(w,t1,t2,x,y,z)"), std::string::npos) << result.singular_script;
+      EXPECT_NE(result.macaulay2_script.find("[w,t1,t2,x,y,z]"), std::string::npos) << result.macaulay2_script;
+    }
+    return result;
+  }
+};
+
+TEST_P(ReproduceOracle, SingularScriptPrintsOurEquation) {
+  if (!testing::is_runnable(testing::kSingular)) {
+    GTEST_SKIP() << "Singular not found (SINGULAR_EXECUTABLE=\"" << testing::kSingular << "\")";
+  }
+  const ImplicitizeResult result = implicitize_surface();
+  expect_prints_our_equation(testing::run_singular(result.singular_script), result.singular_script, result.implicit);
+}
+
+TEST_P(ReproduceOracle, Macaulay2ScriptPrintsOurEquation) {
+  if (!testing::is_runnable(testing::kMacaulay2)) {
+    GTEST_SKIP() << "Macaulay2 not found (MACAULAY2_EXECUTABLE=\"" << testing::kMacaulay2 << "\")";
+  }
+  const ImplicitizeResult result = implicitize_surface();
+  expect_prints_our_equation(testing::run_macaulay2(result.macaulay2_script), result.macaulay2_script, result.implicit);
+}
+
+INSTANTIATE_TEST_SUITE_P(Surfaces, ReproduceOracle, ::testing::ValuesIn(reproduce_surfaces()),
+                         [](const auto& test) { return test.param.name; });
+
+}  // namespace
+}  // namespace implicitizer
