@@ -278,5 +278,17 @@ TEST(CollectIdentifiers, InOrderOfFirstAppearanceWithoutDuplicates) {
   EXPECT_TRUE(collect_identifiers(*parse_expression("1/2")).empty());
 }
 
+TEST(Identifier, FollowsTheContractSyntaxInAscii) {
+  EXPECT_TRUE(is_identifier("s"));
+  EXPECT_TRUE(is_identifier("_t1"));
+  EXPECT_TRUE(is_identifier(std::string(32, 'a')));
+  EXPECT_FALSE(is_identifier(std::string(33, 'a')));
+  EXPECT_FALSE(is_identifier(""));
+  EXPECT_FALSE(is_identifier("1t"));
+  EXPECT_FALSE(is_identifier("s-t"));
+  EXPECT_FALSE(is_identifier("\xe9t"));
+  EXPECT_FALSE(is_identifier("t\xc3\xa9"));
+}
+
 }  // namespace
 }  // namespace implicitizer

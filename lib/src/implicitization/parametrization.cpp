@@ -3,6 +3,7 @@
 #include <set>
 
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/polynomial/expression.hpp"
 #include "implicitizer/polynomial/parser.hpp"
 
 namespace implicitizer {
@@ -17,14 +18,6 @@ const Expression* find_identifier(const Expression& e, const std::string& name) 
     if (const Expression* found = find_identifier(*c, name)) return found;
   }
   return nullptr;
-}
-
-bool is_identifier(const std::string& s) {
-  if (s.empty() || s.size() > 32 || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
-  for (char c : s) {
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
-  }
-  return true;
 }
 
 }  // namespace

@@ -22,7 +22,11 @@ std::vector<std::string> script_parameter_names(const Ring& params) {
       "e",     "pi",    "ii",    "w",     "x",      "y",      "z",      "minpoly", "char",  "var",  "deg"};
   bool plain = true;
   for (const auto& v : params.variables()) {
-    const bool alnum = std::all_of(v.begin(), v.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)); });
+    // Singular and Macaulay2 names: ASCII letters and digits (no '_', which
+    // Macaulay2 refuses in symbols).
+    const bool alnum = std::all_of(v.begin(), v.end(), [](char c) {
+      return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+    });
     if (!alnum || reserved.count(v)) plain = false;
   }
   if (plain) return params.variables();

@@ -359,4 +359,12 @@ std::vector<std::string> collect_identifiers(const Expression& e) {
   return out;
 }
 
+bool is_identifier(std::string_view name, std::size_t max_length) {
+  if (name.empty() || name.size() > max_length || !is_identifier_start(name.front())) return false;
+  for (char c : name) {
+    if (!is_identifier_char(c)) return false;
+  }
+  return true;
+}
+
 }  // namespace implicitizer
