@@ -9,7 +9,7 @@ CMAKE ?= cmake
 CTEST ?= ctest
 CLANG_FORMAT ?= clang-format
 
-.PHONY: all deps configure build test run bench clean format
+.PHONY: all deps configure build test run bench load clean format
 
 all: build
 
@@ -38,15 +38,21 @@ test: deps
 	$(MAKE) build
 	$(CTEST) --test-dir $(BUILD_DIR) --output-on-failure --no-tests=error -j$(JOBS)
 
+# Ctrl-C stops the server gracefully (SIGINT: in-flight work finishes or is cancelled).
 run: deps
 	$(MAKE) build
-	$(BUILD_DIR)/bin/implicitizer --help
-	@echo "make run: the HTTP server (implicitizer-server on 127.0.0.1:8080) arrives with the HTTP issue;"
-	@echo "          until then this shows the command line's help."
+	$(BUILD_DIR)/bin/implicitizer-server --host 127.0.0.1 --port 8080 --static clients/web
 
 bench:
 	$(MAKE) build
 	$(BUILD_DIR)/bin/implicitizer-bench
+
+# Load benchmark with wrk (docs/benchmarks.md, "Load"); about 70 s with the defaults.
+# Not a test: it prints throughput and latency, and fails only on wrong behaviour
+# under overload (see bench/load/run_load.sh).
+load: deps
+	$(MAKE) build
+	SERVER=$(BUILD_DIR)/bin/implicitizer-server bench/load/run_load.sh
 
 clean:
 	rm -rf $(BUILD_DIR)

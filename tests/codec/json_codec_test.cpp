@@ -170,5 +170,13 @@ TEST(EncodeError, Shapes) {
   EXPECT_EQ(encode_error("not_found", "no such path"), R"({"error":{"code":"not_found","message":"no such path"}})");
 }
 
+TEST(EncodeServerLines, HealthAndAccessLog) {
+  EXPECT_EQ(encode_health_status("ok"), R"({"status":"ok"})");
+  EXPECT_EQ(encode_access_log_entry("POST", "/v1/implicitize", 200, 3.25, 924),
+            R"({"method":"POST","path":"/v1/implicitize","status":200,"ms":3.25,"bytes":924})");
+  EXPECT_EQ(encode_access_log_entry("GET", "/a\"b", 404, 0, 0),
+            R"({"method":"GET","path":"/a\"b","status":404,"ms":0.0,"bytes":0})");
+}
+
 }  // namespace
 }  // namespace implicitizer

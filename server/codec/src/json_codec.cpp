@@ -337,6 +337,36 @@ std::string encode_error(std::string_view code, std::string_view message) {
   return encode_error_object(code, message, [](Writer&) {});
 }
 
+std::string encode_health_status(std::string_view status) {
+  rapidjson::StringBuffer buffer;
+  Writer w(buffer);
+  w.StartObject();
+  write_key(w, "status");
+  write_string(w, status);
+  w.EndObject();
+  return finish(buffer);
+}
+
+std::string encode_access_log_entry(std::string_view method, std::string_view path, unsigned status, double ms,
+                                    std::size_t bytes) {
+  rapidjson::StringBuffer buffer;
+  Writer w(buffer);
+  configure(w);
+  w.StartObject();
+  write_key(w, "method");
+  write_string(w, method);
+  write_key(w, "path");
+  write_string(w, path);
+  write_key(w, "status");
+  w.Uint(status);
+  write_key(w, "ms");
+  write_milliseconds(w, ms);
+  write_key(w, "bytes");
+  w.Uint64(bytes);
+  w.EndObject();
+  return finish(buffer);
+}
+
 const char* limit_error_code(Limit limit) {
   switch (limit) {
     case Limit::time:

@@ -67,6 +67,14 @@ std::string encode_error(const LimitExceeded& error);
 /// `not_found`, ...).
 std::string encode_error(std::string_view code, std::string_view message);
 
+/// `{"status": status}`: the body of the server's GET /healthz.
+std::string encode_health_status(std::string_view status);
+
+/// One line of the server's access log (JSON lines on stderr):
+/// `{"method", "path", "status", "ms", "bytes"}`; `path` without the query string.
+std::string encode_access_log_entry(std::string_view method, std::string_view path, unsigned status, double ms,
+                                    std::size_t bytes);
+
 /// The `code` encode_error() writes for `limit`: `time_limit_exceeded`,
 /// `size_limit_exceeded` or `cancelled`.
 const char* limit_error_code(Limit limit);

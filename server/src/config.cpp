@@ -1,0 +1,131 @@
+#include "config.hpp"
+
+#include <charconv>
+#include <functional>
+#include <map>
+#include <thread>
+
+namespace implicitizer::server {
+
+const char* const kServerUsage =
+    "usage: implicitizer-server [flags]\n"
+    "  --host ADDR                 address to bind (127.0.0.1)\n"
+    "  --port N                    TCP port; 0 picks a free one (8080)\n"
+    "  --threads N                 computation workers; 0 = one per core (0)\n"
+    "  --io-threads N              network threads (1)\n"
+    "  --static DIR                serve DIR at / (none)\n"
+    "  --queue-size N              computations waiting for a worker before 503 (256)\n"
+    "  --retry-after S             Retry-After seconds of a 503 (1)\n"
+    "  --cache-size N              results kept in the LRU cache; 0 disables (256)\n"
+    "  --max-body-bytes N          larger request bodies get 413 (1048576)\n"
+    "  --max-header-bytes N        larger request headers get 431 (8192)\n"
+    "  --read-timeout-ms N         per read: slower clients are dropped (10000)\n"
+    "  --write-timeout-ms N        per response write (10000)\n"
+    "  --keep-alive-requests N     requests per connection before it closes (100)\n"
+    "  --max-static-file-bytes N   larger static files are not served (16777216)\n"
+    "  --default-timeout-ms N      computation budget without timeout_ms (10000)\n"
+    "  --max-timeout-ms N          cap of timeout_ms; 0 and larger values get it (60000)\n"
+    "  --max-terms N               largest intermediate polynomial; beyond is 413 (200000)\n"
+    "  --json-max-depth N          deepest JSON nesting accepted (32)\n"
+    "  --shutdown-grace-ms N       on SIGTERM/SIGINT, time in-flight work may finish (5000)\n"
+    "  --cors-origins LIST         comma-separated allowed origins, * for any, '' for none (*)\n"
+    "  --quiet                     no JSON-lines access log on stderr\n"
+    "  --help                      this text\n";
+
+unsigned ServerConfig::effective_worker_threads() const {
+  if (worker_threads > 0) return worker_threads;
+  const unsigned cores = std::thread::hardware_concurrency();
+  return cores > 0 ? cores : 1;
+}
+
+namespace {
+
+std::uint64_t parse_unsigned(const std::string& flag, const std::string& text, std::uint64_t min, std::uint64_t max) {
+  std::uint64_t value = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end || value < min || value > max) {
+    throw UsageError("--" + flag + " needs an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
+                     "], not '" + text + "'");
+  }
+  return value;
+}
+
+std::vector<std::string> split_origins(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::size_t stop = comma == std::string::npos ? text.size() : comma;
+    if (stop > start) out.push_back(text.substr(start, stop - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<ServerConfig> parse_server_flags(const std::vector<std::string>& args) {
+  ServerConfig config;
+  constexpr std::uint64_t kBig = std::uint64_t{1} << 40;
+  using Setter = std::function<void(const std::string& flag, const std::string& value)>;
+  auto millis = [](std::chrono::milliseconds& field, std::uint64_t min) {
+    return [&field, min](const std::string& flag, const std::string& v) {
+      field = std::chrono::milliseconds(parse_unsigned(flag, v, min, 24ULL * 3600 * 1000));
+    };
+  };
+  auto count = [](auto& field, std::uint64_t min, std::uint64_t max) {
+    return [&field, min, max](const std::string& flag, const std::string& v) {
+      field = static_cast<std::remove_reference_t<decltype(field)>>(parse_unsigned(flag, v, min, max));
+    };
+  };
+  const std::map<std::string, Setter> valued = {
+      {"host", [&](const std::string&, const std::string& v) { config.host = v; }},
+      {"port", count(config.port, 0, 65535)},
+      {"threads", count(config.worker_threads, 0, 1024)},
+      {"io-threads", count(config.io_threads, 1, 64)},
+      {"static", [&](const std::string&, const std::string& v) { config.static_dir = v; }},
+      {"queue-size", count(config.queue_capacity, 0, 1'000'000)},
+      {"retry-after", count(config.retry_after_seconds, 0, 3600)},
+      {"cache-size", count(config.cache_capacity, 0, 1'000'000)},
+      {"max-body-bytes", count(config.max_body_bytes, 1, kBig)},
+      {"max-header-bytes", count(config.max_header_bytes, 256, 1 << 20)},
+      {"read-timeout-ms", millis(config.read_timeout, 1)},
+      {"write-timeout-ms", millis(config.write_timeout, 1)},
+      {"keep-alive-requests", count(config.max_requests_per_connection, 1, 1'000'000)},
+      {"max-static-file-bytes", count(config.max_static_file_bytes, 0, kBig)},
+      {"default-timeout-ms", millis(config.default_timeout, 1)},
+      {"max-timeout-ms", millis(config.max_timeout, 1)},
+      {"max-terms", count(config.max_terms, 0, kBig)},
+      {"json-max-depth", count(config.json_max_depth, 1, 4096)},
+      {"shutdown-grace-ms", millis(config.shutdown_grace, 0)},
+      {"cors-origins", [&](const std::string&, const std::string& v) { config.cors_origins = split_origins(v); }},
+  };
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (arg.rfind("--", 0) != 0) throw UsageError("unexpected argument '" + arg + "'");
+    std::string name = arg.substr(2);
+    std::optional<std::string> value;
+    if (const std::size_t eq = name.find('='); eq != std::string::npos) {
+      value = name.substr(eq + 1);
+      name.resize(eq);
+    }
+    if (name == "help" && !value) return std::nullopt;
+    if (name == "quiet" && !value) {
+      config.quiet = true;
+      continue;
+    }
+    const auto it = valued.find(name);
+    if (it == valued.end()) throw UsageError("unknown flag '--" + name + "'");
+    if (!value) {
+      if (i + 1 >= args.size()) throw UsageError("--" + name + " needs a value");
+      value = args[++i];
+    }
+    it->second(name, *value);
+  }
+  if (config.default_timeout > config.max_timeout) config.default_timeout = config.max_timeout;
+  return config;
+}
+
+}  // namespace implicitizer::server

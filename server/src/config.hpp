@@ -1,0 +1,75 @@
+#pragma once
+/// \file
+/// Every limit and setting of implicitizer-server in one place, with its default and
+/// the command-line flag that changes it (docs/api.md lists the same table).
+
+#include <chrono>
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace implicitizer::server {
+
+/// The server's settings. Defaults are the documented ones; parse_server_flags()
+/// overrides them from the command line.
+struct ServerConfig {
+  // ---- transport ------------------------------------------------------------
+  std::string host = "127.0.0.1";  ///< --host: address to bind
+  unsigned short port = 8080;      ///< --port: TCP port (0 = any free port, printed at start)
+  unsigned io_threads = 1;         ///< --io-threads: threads running the network loop
+  /// --static: directory served at `/` (empty = no static files, `/` answers 404).
+  std::string static_dir;
+  std::size_t max_body_bytes = 1 << 20;    ///< --max-body-bytes: larger bodies get 413
+  std::size_t max_header_bytes = 8 << 10;  ///< --max-header-bytes: larger headers get 431
+  /// --read-timeout-ms: armed before every read (request line, headers, body, and the
+  /// idle wait between keep-alive requests); a client that is slower is dropped.
+  std::chrono::milliseconds read_timeout{10'000};
+  std::chrono::milliseconds write_timeout{10'000};  ///< --write-timeout-ms: per response
+  /// --keep-alive-requests: requests answered on one connection before it is closed.
+  unsigned max_requests_per_connection = 100;
+  std::size_t max_static_file_bytes = 16 << 20;  ///< --max-static-file-bytes: larger files get 404
+
+  // ---- computation ----------------------------------------------------------
+  unsigned worker_threads = 0;  ///< --threads: workers running the algebra (0 = one per core)
+  /// --queue-size: computations waiting for a worker; one more gets 503 + Retry-After.
+  std::size_t queue_capacity = 256;
+  unsigned retry_after_seconds = 1;  ///< --retry-after: the Retry-After of a 503
+  /// --default-timeout-ms: budget of a request without `timeout_ms`.
+  std::chrono::milliseconds default_timeout{10'000};
+  /// --max-timeout-ms: the cap; a larger `timeout_ms`, or 0 ("no limit"), gets this.
+  std::chrono::milliseconds max_timeout{60'000};
+  /// --max-terms: largest intermediate polynomial (terms) of a computation; beyond → 413.
+  std::size_t max_terms = 200'000;
+  std::size_t json_max_depth = 32;   ///< --json-max-depth: deeper request JSON gets 400
+  std::size_t cache_capacity = 256;  ///< --cache-size: results kept (LRU; 0 = no cache)
+  /// --shutdown-grace-ms: on SIGTERM/SIGINT, how long in-flight work may finish
+  /// before it is cancelled.
+  std::chrono::milliseconds shutdown_grace{5'000};
+
+  // ---- browsers and logs ----------------------------------------------------
+  /// --cors-origins: origins allowed to call the API from a browser; `*` (the
+  /// default) allows any, an empty list none.
+  std::vector<std::string> cors_origins{"*"};
+  bool quiet = false;  ///< --quiet: no access log on stderr
+
+  /// The number of workers to start: worker_threads, or the number of cores.
+  unsigned effective_worker_threads() const;
+};
+
+/// A command line the server cannot start with; main() prints it with the usage.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The flags, one per line, for `--help`.
+extern const char* const kServerUsage;
+
+/// Reads the flags of `implicitizer-server` (see kServerUsage). Returns nullopt for
+/// `--help`. Throws UsageError for an unknown flag, a missing value or a value out
+/// of range.
+std::optional<ServerConfig> parse_server_flags(const std::vector<std::string>& args);
+
+}  // namespace implicitizer::server

@@ -1,0 +1,14 @@
+#include "handlers/handler.hpp"
+
+namespace implicitizer::server {
+
+Budget make_computation_budget(const std::optional<double>& requested_seconds, const ServerConfig& config) {
+  const double cap = std::chrono::duration<double>(config.max_timeout).count();
+  double seconds = std::chrono::duration<double>(config.default_timeout).count();
+  if (requested_seconds) seconds = *requested_seconds <= 0 || *requested_seconds > cap ? cap : *requested_seconds;
+  Budget budget = Budget::with_timeout(seconds);
+  budget.set_max_terms(config.max_terms);
+  return budget;
+}
+
+}  // namespace implicitizer::server

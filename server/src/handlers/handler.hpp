@@ -1,0 +1,76 @@
+#pragma once
+/// \file
+/// What every endpoint handler receives and may return. A handler is a pure
+/// function of the request (plus the shared cache and metrics): it either answers
+/// at once, or hands back a Computation that the session runs on the worker pool,
+/// since no algebra may run on a network thread.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "config.hpp"
+#include "http_message.hpp"
+#include "implicitizer/core/budget.hpp"
+#include "implicitizer/groebner/buchberger.hpp"
+#include "metrics_registry.hpp"
+#include "result_cache.hpp"
+
+namespace implicitizer::server {
+
+/// Work to run on a worker thread. `run` produces the response and may throw what
+/// the library throws (the router maps it to the contract's error). `budget` is the
+/// one `run` checks: cancelling it (client gone, shutdown) stops the work.
+struct Computation {
+  std::function<Response()> run;
+  Budget budget;
+};
+
+/// A handler's answer: a response now, or a computation for the pool.
+using HandlerResult = std::variant<Response, Computation>;
+
+/// The shared state handlers may use. Outlives every request.
+struct HandlerContext {
+  const ServerConfig& config;
+  ResultCache& cache;
+  MetricsRegistry& metrics;
+  /// Reads the pool's and the cache's gauges for /metrics.
+  std::function<MetricsGauges()> gauges;
+};
+
+/// The budget of a computation whose request asked for `requested_seconds`
+/// (absent: the configured default; 0 or above the cap: the cap), with the term
+/// limit of `config`. Its deadline starts now, so time spent queued counts.
+Budget make_computation_budget(const std::optional<double>& requested_seconds, const ServerConfig& config);
+
+/// The shape every algebra endpoint shares: the cached body for `key` if there is
+/// one (`X-Cache: hit`), else a Computation that runs `answer(decoded, params)` on a
+/// worker under a budget for the request's timeout, caches the body it returns and
+/// answers it (`X-Cache: miss`). `answer` returns the encoded JSON body.
+template <typename Request, typename Answer>
+HandlerResult cached_computation(Request decoded, std::string key, const HandlerContext& context, Answer answer) {
+  if (const auto body = context.cache.find(key)) {
+    Response response = make_json_response(http::status::ok, *body);
+    response.set("X-Cache", "hit");
+    return response;
+  }
+  Computation computation;
+  computation.budget = make_computation_budget(decoded.timeout_seconds, context.config);
+  // The budget already holds the deadline (counted from now, queue time included);
+  // a timeout left in the request would restart it when the worker begins.
+  decoded.timeout_seconds.reset();
+  computation.run = [decoded = std::move(decoded), key = std::move(key), budget = computation.budget,
+                     cache = &context.cache, answer = std::move(answer)]() {
+    BuchbergerParams params;
+    params.budget = budget;
+    std::string body = answer(decoded, params);
+    cache->insert(key, body);
+    Response response = make_json_response(http::status::ok, std::move(body));
+    response.set("X-Cache", "miss");
+    return response;
+  };
+  return computation;
+}
+
+}  // namespace implicitizer::server

@@ -1,0 +1,174 @@
+#include "router.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <utility>
+
+#include "handlers/groebner.hpp"
+#include "handlers/healthz.hpp"
+#include "handlers/implicitize.hpp"
+#include "handlers/metrics.hpp"
+#include "handlers/static_files.hpp"
+#include "implicitizer/core/errors.hpp"
+
+namespace implicitizer::server {
+
+bool Router::Route::accepts(http::verb method) const {
+  if (method == http::verb::head) method = http::verb::get;
+  return std::find(methods.begin(), methods.end(), method) != methods.end();
+}
+
+namespace {
+
+constexpr const char* kStaticAllow = "GET, HEAD, OPTIONS";
+
+std::string_view header_value(const Request& request, http::field field) {
+  const auto it = request.find(field);
+  if (it == request.end()) return {};
+  return {it->value().data(), it->value().size()};
+}
+
+ComputationOutcome classify(const std::exception_ptr& error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const InputError&) {
+    return ComputationOutcome::input_error;
+  } catch (const NoSingleEquation&) {
+    return ComputationOutcome::no_single_equation;
+  } catch (const LimitExceeded& e) {
+    return e.limit() == Limit::time   ? ComputationOutcome::time_limit
+           : e.limit() == Limit::size ? ComputationOutcome::size_limit
+                                      : ComputationOutcome::cancelled;
+  } catch (...) {
+    return ComputationOutcome::failed;
+  }
+}
+
+}  // namespace
+
+Router::Router(HandlerContext context) : context_(std::move(context)), cors_(context_.config.cors_origins) {
+  const HandlerContext& c = context_;
+  auto answer_now = [](Response r) { return HandlerResult(std::move(r)); };
+  routes_.push_back({"/healthz", {http::verb::get}, "GET, HEAD, OPTIONS", [answer_now](const Request& r) {
+                       return answer_now(handle_healthz(r));
+                     }});
+  routes_.push_back({"/metrics", {http::verb::get}, "GET, HEAD, OPTIONS", [&c, answer_now](const Request& r) {
+                       return answer_now(handle_metrics(r, c));
+                     }});
+  routes_.push_back({"/v1/implicitize", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r) {
+                       return handle_implicitize(r, c);
+                     }});
+  routes_.push_back(
+      {"/v1/groebner", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r) { return handle_groebner(r, c); }});
+}
+
+std::vector<RouteInfo> Router::routes() const {
+  std::vector<RouteInfo> out;
+  for (const Route& route : routes_) out.push_back({route.path, route.allow});
+  return out;
+}
+
+Routed Router::route(const Request& request) const {
+  const std::string_view target(request.target().data(), request.target().size());
+  if (target.empty() || target.front() != '/') {
+    return {"other", finish(request, make_error_response(http::status::bad_request, "invalid_path",
+                                                         "the request target must be a path starting with '/'"))};
+  }
+  const std::string_view path = target.substr(0, target.find_first_of("?#"));
+  const std::string_view origin = header_value(request, http::field::origin);
+  const bool preflight = request.method() == http::verb::options;
+
+  const auto route = std::find_if(routes_.begin(), routes_.end(), [&](const Route& r) { return r.path == path; });
+  if (route != routes_.end()) {
+    if (preflight) {
+      Response response = origin.empty() ? make_response(http::status::no_content, "", "text/plain")
+                                         : cors_.answer_preflight(origin, route->allow);
+      response.set(http::field::allow, route->allow);
+      return {route->path, finish(request, std::move(response))};
+    }
+    if (!route->accepts(request.method())) {
+      Response response = make_error_response(http::status::method_not_allowed, "method_not_allowed",
+                                              "method " + std::string(request.method_string()) + " is not allowed on " +
+                                                  route->path + " (allowed: " + route->allow + ")");
+      response.set(http::field::allow, route->allow);
+      return {route->path, finish(request, std::move(response))};
+    }
+    HandlerResult result = route->handle(request);
+    if (auto* response = std::get_if<Response>(&result)) return {route->path, finish(request, std::move(*response))};
+    return {route->path, finish(request, route->path, std::get<Computation>(std::move(result)))};
+  }
+
+  // Not an API route: the API namespace never falls through to files.
+  const bool api_path = path == "/v1" || path.rfind("/v1/", 0) == 0;
+  if (api_path || context_.config.static_dir.empty()) {
+    return {"other", finish(request, make_error_response(http::status::not_found, "not_found",
+                                                         "no such endpoint: " + std::string(path)))};
+  }
+  if (request.method() == http::verb::get || request.method() == http::verb::head) {
+    return {"static", finish(request, handle_static_file(request, context_))};
+  }
+  if (preflight) {
+    Response response = origin.empty() ? make_response(http::status::no_content, "", "text/plain")
+                                       : cors_.answer_preflight(origin, kStaticAllow);
+    response.set(http::field::allow, kStaticAllow);
+    return {"static", finish(request, std::move(response))};
+  }
+  Response response = handle_static_file(request, context_);
+  if (response.result() == http::status::ok) {
+    response = make_error_response(http::status::method_not_allowed, "method_not_allowed",
+                                   "static files allow GET and HEAD only");
+    response.set(http::field::allow, kStaticAllow);
+  }
+  return {"static", finish(request, std::move(response))};
+}
+
+Response Router::make_overloaded_response(const Request& request) const {
+  Response response = make_error_response(http::status::service_unavailable, "overloaded",
+                                          "the server is busy (computation queue full); retry later");
+  response.set(http::field::retry_after, std::to_string(context_.config.retry_after_seconds));
+  return finish(request, std::move(response));
+}
+
+Response Router::make_transport_error_response(const Request& request, http::status status, std::string_view code,
+                                               std::string_view message) const {
+  Response response = finish(request, make_error_response(status, code, message));
+  response.keep_alive(false);
+  return response;
+}
+
+Response Router::finish(const Request& request, Response response) const {
+  response.version(request.version() == 10 ? 10 : 11);
+  response.keep_alive(request.keep_alive());
+  cors_.apply(header_value(request, http::field::origin), response);
+  if (request.method() == http::verb::head) {
+    // HEAD: the headers GET would send, Content-Length included, and no body.
+    const std::size_t length = response.body().size();
+    response.body().clear();
+    response.content_length(length);
+  }
+  return response;
+}
+
+Computation Router::finish(const Request& request, const std::string& endpoint, Computation computation) const {
+  // The worker needs the request's header to finish the response, not its body
+  // (which may be a megabyte): copy only the header.
+  computation.run = [this, inner = std::move(computation.run), budget = computation.budget, endpoint,
+                     head = Request(request.base())]() {
+    const auto start = std::chrono::steady_clock::now();
+    Response response;
+    ComputationOutcome outcome = ComputationOutcome::ok;
+    try {
+      budget.check("the wait for a worker");  // timed out or cancelled while queued
+      response = inner();
+    } catch (...) {
+      outcome = classify(std::current_exception());
+      response = make_exception_response(std::current_exception());
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    context_.metrics.record_computation(endpoint, outcome, seconds);
+    return finish(head, std::move(response));
+  };
+  return computation;
+}
+
+}  // namespace implicitizer::server

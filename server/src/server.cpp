@@ -1,0 +1,81 @@
+#include "server.hpp"
+
+#include <boost/asio/ip/address.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <chrono>
+#include <filesystem>
+
+namespace implicitizer::server {
+
+namespace net = boost::asio;
+using tcp = net::ip::tcp;
+
+namespace {
+
+tcp::endpoint resolve_endpoint(net::io_context& io, const std::string& host, unsigned short port) {
+  boost::system::error_code ec;
+  const net::ip::address address = net::ip::make_address(host, ec);
+  if (!ec) return {address, port};
+  tcp::resolver resolver(io);
+  const auto results = resolver.resolve(host, std::to_string(port), tcp::resolver::passive);
+  return results.begin()->endpoint();
+}
+
+HandlerContext make_handler_context(const ServerConfig& config, ResultCache& cache, MetricsRegistry& metrics,
+                                    const WorkerPool& pool) {
+  return HandlerContext{config, cache, metrics, [&cache, &pool] {
+                          MetricsGauges g;
+                          g.queue_depth = pool.queued();
+                          g.queue_capacity = pool.queue_capacity();
+                          g.workers_busy = pool.busy();
+                          g.workers = pool.threads();
+                          g.queue_rejections = pool.rejected();
+                          g.cache_entries = cache.size();
+                          g.cache_capacity = cache.capacity();
+                          g.cache_hits = cache.hits();
+                          g.cache_misses = cache.misses();
+                          g.cache_evictions = cache.evictions();
+                          return g;
+                        }};
+}
+
+ServerConfig checked(ServerConfig config) {
+  if (!config.static_dir.empty() && !std::filesystem::is_directory(config.static_dir)) {
+    throw UsageError("--static: '" + config.static_dir + "' is not a directory");
+  }
+  return config;
+}
+
+}  // namespace
+
+Server::Server(ServerConfig config)
+    : config_(checked(std::move(config))),
+      cache_(config_.cache_capacity),
+      pool_(config_.effective_worker_threads(), config_.queue_capacity),
+      router_(make_handler_context(config_, cache_, metrics_, pool_)),
+      log_(!config_.quiet),
+      session_context_{config_, router_, pool_, metrics_, log_},
+      io_(static_cast<int>(config_.io_threads)) {
+  listener_ = std::make_shared<Listener>(io_, resolve_endpoint(io_, config_.host, config_.port), session_context_);
+  port_ = listener_->local_endpoint().port();
+  listener_->run();
+  for (unsigned i = 0; i < config_.io_threads; ++i) io_threads_.emplace_back([this] { io_.run(); });
+}
+
+Server::~Server() { stop(); }
+
+void Server::stop() {
+  if (stopped_) return;
+  stopped_ = true;
+  listener_->stop();
+  // Workers finish or are cancelled; each posts its answer to its session's strand,
+  // which the still-running network threads write.
+  pool_.shutdown(config_.shutdown_grace);
+  // A short, bounded wait for those last writes; a client that does not read them
+  // in this time loses them.
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  io_.stop();
+  for (std::thread& t : io_threads_) t.join();
+}
+
+}  // namespace implicitizer::server

@@ -1,0 +1,56 @@
+#pragma once
+/// \file
+/// The whole service assembled: metrics, cache, worker pool, router, network threads
+/// and listener, with the shutdown order that lets in-flight answers go out.
+
+#include <boost/asio/io_context.hpp>
+#include <memory>
+#include <thread>
+#include <vector>
+
+#include "access_log.hpp"
+#include "config.hpp"
+#include "listener.hpp"
+#include "metrics_registry.hpp"
+#include "result_cache.hpp"
+#include "router.hpp"
+#include "worker_pool.hpp"
+
+namespace implicitizer::server {
+
+/// A running implicitizer-server. Construction binds the port and starts the
+/// workers and network threads; stop() (or destruction) shuts down.
+class Server {
+ public:
+  /// Starts serving with `config`. Throws boost::system::system_error when the address
+  /// cannot be bound or resolved, UsageError when the static directory does not exist.
+  explicit Server(ServerConfig config);
+  /// stop(), if not done yet.
+  ~Server();
+  Server(const Server&) = delete;
+  Server& operator=(const Server&) = delete;
+
+  /// The port bound (the system's choice when the config asked for 0).
+  unsigned short port() const { return port_; }
+
+  /// Graceful shutdown: stops accepting, lets in-flight computations finish for the
+  /// configured grace and cancels the rest, gives their answers a moment to be
+  /// written, then stops the network threads. Idempotent.
+  void stop();
+
+ private:
+  ServerConfig config_;
+  MetricsRegistry metrics_;
+  ResultCache cache_;
+  WorkerPool pool_;
+  Router router_;
+  AccessLog log_;
+  SessionContext session_context_;
+  boost::asio::io_context io_;
+  std::shared_ptr<Listener> listener_;
+  std::vector<std::thread> io_threads_;
+  unsigned short port_ = 0;
+  bool stopped_ = false;
+};
+
+}  // namespace implicitizer::server

@@ -1,0 +1,188 @@
+#include "session.hpp"
+
+#include <sys/socket.h>
+
+#include <boost/asio/dispatch.hpp>
+#include <boost/asio/post.hpp>
+#include <cerrno>
+#include <cstring>
+
+namespace implicitizer::server {
+
+namespace beast = boost::beast;
+namespace net = boost::asio;
+using tcp = net::ip::tcp;
+
+namespace {
+
+// After an answer that ends the connection, read and discard what the client still
+// sends for this long (or this much), so that closing does not reset the connection
+// before the client has read the answer (the classic lingering close).
+constexpr std::chrono::milliseconds kLingerTime{1000};
+constexpr std::size_t kLingerBytes = 4 << 20;
+
+bool is_http_error(const beast::error_code& ec) { return std::strcmp(ec.category().name(), "beast.http") == 0; }
+
+}  // namespace
+
+Session::Session(tcp::socket&& socket, const SessionContext& context) : stream_(std::move(socket)), context_(context) {
+  context_.metrics.record_open();
+}
+
+Session::~Session() {
+  // Reached only when no handler holds the session: nothing computes for it any more,
+  // but a computation it started may still be queued; make sure it stops early.
+  if (computing_) budget_.cancel();
+  context_.metrics.record_close();
+}
+
+void Session::run() {
+  // Start on the connection's strand: every handler of this session runs there.
+  net::dispatch(stream_.get_executor(), beast::bind_front_handler(&Session::do_read, shared_from_this()));
+}
+
+void Session::do_read() {
+  parser_.emplace();
+  parser_->header_limit(static_cast<std::uint32_t>(context_.config.max_header_bytes));
+  parser_->body_limit(context_.config.max_body_bytes);
+  stream_.expires_after(context_.config.read_timeout);
+  http::async_read(stream_, buffer_, *parser_, beast::bind_front_handler(&Session::on_read, shared_from_this()));
+}
+
+void Session::on_read(beast::error_code ec, std::size_t) {
+  read_done_ = std::chrono::steady_clock::now();
+  if (ec == http::error::body_limit) {
+    return reject(http::status::payload_too_large, "body_too_large",
+                  "the request body exceeds " + std::to_string(context_.config.max_body_bytes) + " bytes");
+  }
+  if (ec == http::error::header_limit) {
+    return reject(http::status::request_header_fields_too_large, "headers_too_large",
+                  "the request header exceeds " + std::to_string(context_.config.max_header_bytes) + " bytes");
+  }
+  if (ec && is_http_error(ec) && ec != http::error::end_of_stream && ec != http::error::partial_message) {
+    return reject(http::status::bad_request, "bad_request", "malformed HTTP request: " + ec.message());
+  }
+  if (ec) {
+    // The client closed between requests or mid-request, the connection broke, or
+    // the client was too slow (the stream has closed itself then).
+    if (ec != beast::error::timeout) do_close();
+    return;
+  }
+  handle(parser_->release());
+}
+
+void Session::handle(Request request) {
+  ++requests_;
+  method_ = std::string(request.method_string());
+  path_ = std::string(request.target());
+  Routed routed = context_.router.route(request);
+  endpoint_ = std::move(routed.endpoint);
+  if (auto* response = std::get_if<Response>(&routed.result)) return send(std::move(*response));
+
+  Computation computation = std::get<Computation>(std::move(routed.result));
+  budget_ = computation.budget;
+  // The worker hands the finished response back to this session's strand.
+  WorkerPool::Job job{[self = shared_from_this(), run = std::move(computation.run)]() {
+                        Response response = run();
+                        net::post(self->stream_.get_executor(), [self, response = std::move(response)]() mutable {
+                          self->on_computed(std::move(response));
+                        });
+                      },
+                      computation.budget};
+  if (!context_.pool.try_submit(job)) return send(context_.router.make_overloaded_response(request));
+  computing_ = true;
+  client_gone_ = false;
+  // No read timeout while the client waits for its answer; the budget bounds the wait.
+  stream_.expires_never();
+  watch_for_disconnect();
+}
+
+void Session::watch_for_disconnect() {
+  stream_.socket().async_wait(tcp::socket::wait_read,
+                              beast::bind_front_handler(&Session::on_readable, shared_from_this()));
+}
+
+void Session::on_readable(beast::error_code ec) {
+  if (!computing_ || ec == net::error::operation_aborted) return;  // the answer came first
+  if (!ec) {
+    char byte = 0;
+    const ssize_t n = ::recv(stream_.socket().native_handle(), &byte, 1, MSG_PEEK | MSG_DONTWAIT);
+    if (n > 0) return;  // a pipelined request: the client is still there; stop watching
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) return watch_for_disconnect();
+  }
+  // End of stream or a socket error: nobody is waiting for this answer any more.
+  client_gone_ = true;
+  budget_.cancel();
+}
+
+void Session::on_computed(Response response) {
+  computing_ = false;
+  if (client_gone_) {
+    // 499 is nginx's "client closed request": logged, never sent.
+    context_.metrics.record_request(
+        endpoint_, 499, std::chrono::duration<double>(std::chrono::steady_clock::now() - read_done_).count());
+    log_request(499, 0);
+    return do_close();
+  }
+  beast::error_code ignored;
+  stream_.socket().cancel(ignored);  // ends the disconnect watch
+  send(std::move(response));
+}
+
+void Session::send(Response response) {
+  if (requests_ >= context_.config.max_requests_per_connection) response.keep_alive(false);
+  response_ = std::make_shared<Response>(std::move(response));
+  stream_.expires_after(context_.config.write_timeout);
+  http::async_write(stream_, *response_, beast::bind_front_handler(&Session::on_write, shared_from_this()));
+}
+
+void Session::on_write(beast::error_code ec, std::size_t bytes) {
+  const unsigned status = response_->result_int();
+  context_.metrics.record_request(endpoint_, status,
+                                  std::chrono::duration<double>(std::chrono::steady_clock::now() - read_done_).count());
+  log_request(status, bytes);
+  if (ec) return;  // the stream is closed or broken; the session ends with this handler
+  const bool keep_alive = response_->keep_alive();
+  response_.reset();
+  if (!keep_alive) return do_close();
+  do_read();
+}
+
+void Session::reject(http::status status, std::string_view code, std::string_view message) {
+  // The header may be incomplete: the router still sees method, target and Origin
+  // when they were read, which is all it uses.
+  const Request& partial = parser_->get();
+  method_ = std::string(partial.method_string());
+  path_ = std::string(partial.target());
+  endpoint_ = "other";
+  ++requests_;
+  send(context_.router.make_transport_error_response(partial, status, code, message));
+}
+
+void Session::do_close() {
+  beast::error_code ec;
+  stream_.socket().shutdown(tcp::socket::shutdown_send, ec);
+  if (ec) return;
+  drained_ = 0;
+  stream_.expires_after(kLingerTime);
+  drain();
+}
+
+void Session::drain() {
+  stream_.async_read_some(net::buffer(drain_buffer_), [self = shared_from_this()](beast::error_code ec, std::size_t n) {
+    self->drained_ += n;
+    if (ec || self->drained_ > kLingerBytes) {
+      beast::error_code ignored;
+      self->stream_.socket().close(ignored);
+      return;
+    }
+    self->drain();
+  });
+}
+
+void Session::log_request(unsigned status, std::size_t bytes) {
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - read_done_).count();
+  context_.log.write(method_, path_, status, ms, bytes);
+}
+
+}  // namespace implicitizer::server

@@ -1,0 +1,86 @@
+#pragma once
+/// \file
+/// One client connection: read → route → (compute on the pool) → write → read, in
+/// Beast's do_x/on_x style. Transport only: what to answer is the router's business.
+///
+/// Limits enforced here: a read timeout armed before every read (slow or idle clients
+/// are dropped), header and body limits on every parser (431 / 413), a request cap
+/// per connection, a write timeout. While a computation runs the session waits for
+/// the socket to become readable: end of stream means the client left, and the
+/// computation's budget is cancelled.
+
+#include <array>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "access_log.hpp"
+#include "config.hpp"
+#include "metrics_registry.hpp"
+#include "router.hpp"
+#include "worker_pool.hpp"
+
+namespace implicitizer::server {
+
+/// What every session shares; outlives all sessions.
+struct SessionContext {
+  const ServerConfig& config;
+  const Router& router;
+  WorkerPool& pool;
+  MetricsRegistry& metrics;
+  AccessLog& log;
+};
+
+/// An HTTP/1.1 connection. Owned by the handlers it has in flight (shared_from_this).
+class Session : public std::enable_shared_from_this<Session> {
+ public:
+  /// Takes over `socket`, whose executor must be a strand (the listener makes one).
+  Session(boost::asio::ip::tcp::socket&& socket, const SessionContext& context);
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  /// Starts reading the first request.
+  void run();
+
+ private:
+  void do_read();
+  void on_read(boost::beast::error_code ec, std::size_t bytes);
+  void handle(Request request);
+  void watch_for_disconnect();
+  void on_readable(boost::beast::error_code ec);
+  void on_computed(Response response);
+  void send(Response response);
+  void on_write(boost::beast::error_code ec, std::size_t bytes);
+  void reject(http::status status, std::string_view code, std::string_view message);
+  void do_close();
+  void drain();
+  void log_request(unsigned status, std::size_t bytes);
+
+  boost::beast::tcp_stream stream_;
+  boost::beast::flat_buffer buffer_;
+  const SessionContext& context_;
+  std::optional<http::request_parser<http::string_body>> parser_;
+  std::shared_ptr<Response> response_;  // alive until its write completes
+  unsigned requests_ = 0;
+
+  // The request being answered, for the log and metrics.
+  std::string method_;
+  std::string path_;
+  std::string endpoint_ = "other";
+  std::chrono::steady_clock::time_point read_done_;
+
+  // The computation in flight, if any.
+  bool computing_ = false;
+  bool client_gone_ = false;
+  Budget budget_;
+
+  std::array<char, 4096> drain_buffer_{};
+  std::size_t drained_ = 0;
+};
+
+}  // namespace implicitizer::server

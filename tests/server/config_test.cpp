@@ -1,0 +1,53 @@
+#include "config.hpp"
+
+#include <gtest/gtest.h>
+
+namespace implicitizer::server {
+namespace {
+
+TEST(ServerFlags, DefaultsAreTheDocumentedOnes) {
+  const auto config = parse_server_flags({});
+  ASSERT_TRUE(config);
+  EXPECT_EQ(config->host, "127.0.0.1");
+  EXPECT_EQ(config->port, 8080);
+  EXPECT_EQ(config->max_body_bytes, 1u << 20);
+  EXPECT_EQ(config->default_timeout.count(), 10'000);
+  EXPECT_EQ(config->max_timeout.count(), 60'000);
+  EXPECT_EQ(config->cors_origins, std::vector<std::string>{"*"});
+  EXPECT_GE(config->effective_worker_threads(), 1u);
+}
+
+TEST(ServerFlags, ReadsValuesInBothSpellings) {
+  const auto config =
+      parse_server_flags({"--host", "0.0.0.0", "--port=0", "--threads", "3", "--static", "web", "--cors-origins",
+                          "https://a,https://b", "--quiet", "--max-body-bytes", "1000"});
+  ASSERT_TRUE(config);
+  EXPECT_EQ(config->host, "0.0.0.0");
+  EXPECT_EQ(config->port, 0);
+  EXPECT_EQ(config->worker_threads, 3u);
+  EXPECT_EQ(config->effective_worker_threads(), 3u);
+  EXPECT_EQ(config->static_dir, "web");
+  EXPECT_EQ(config->cors_origins, (std::vector<std::string>{"https://a", "https://b"}));
+  EXPECT_TRUE(config->quiet);
+  EXPECT_EQ(config->max_body_bytes, 1000u);
+}
+
+TEST(ServerFlags, HelpReturnsNothing) { EXPECT_FALSE(parse_server_flags({"--help"})); }
+
+TEST(ServerFlags, RefusesBadFlagsAndValues) {
+  EXPECT_THROW(parse_server_flags({"--nope"}), UsageError);
+  EXPECT_THROW(parse_server_flags({"--port"}), UsageError);
+  EXPECT_THROW(parse_server_flags({"--port", "70000"}), UsageError);
+  EXPECT_THROW(parse_server_flags({"--threads", "-1"}), UsageError);
+  EXPECT_THROW(parse_server_flags({"--read-timeout-ms", "0"}), UsageError);
+  EXPECT_THROW(parse_server_flags({"stray"}), UsageError);
+}
+
+TEST(ServerFlags, DefaultTimeoutNeverExceedsTheCap) {
+  const auto config = parse_server_flags({"--default-timeout-ms", "90000", "--max-timeout-ms", "2000"});
+  ASSERT_TRUE(config);
+  EXPECT_EQ(config->default_timeout.count(), 2000);
+}
+
+}  // namespace
+}  // namespace implicitizer::server

@@ -1,0 +1,96 @@
+"""Starts build/bin/implicitizer-server on an ephemeral loopback port and talks HTTP to
+it with the standard library only (http.client, socket). Shared by server_test.py and
+reproduce_test.py."""
+
+import http.client
+import json
+import os
+import signal
+import socket
+import subprocess
+import tempfile
+import threading
+import time
+
+
+class Server:
+    """A running implicitizer-server; `port` is the one it printed on its first line."""
+
+    def __init__(self, binary, *flags):
+        self.log = tempfile.NamedTemporaryFile(prefix="implicitizer-server-", suffix=".log", delete=False)
+        self.proc = subprocess.Popen([binary, "--host", "127.0.0.1", "--port", "0", *flags],
+                                     stdout=subprocess.PIPE, stderr=self.log, text=True)
+        line = [None]
+
+        def read_first_line():
+            line[0] = self.proc.stdout.readline()
+
+        reader = threading.Thread(target=read_first_line, daemon=True)
+        reader.start()
+        reader.join(20)
+        if not line[0] or "listening on" not in line[0]:
+            self.proc.kill()
+            raise RuntimeError("server did not start: %r; log:\n%s" % (line[0], self.log_text()))
+        self.port = int(line[0].strip().rsplit(":", 1)[1])
+
+    def log_text(self):
+        with open(self.log.name, encoding="utf-8", errors="replace") as f:
+            return f.read()
+
+    def stop(self, timeout=20):
+        """SIGTERM, then the exit status (None if it had to be killed)."""
+        if self.proc.poll() is None:
+            self.proc.send_signal(signal.SIGTERM)
+            try:
+                return self.proc.wait(timeout)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+                return None
+        return self.proc.returncode
+
+    def close(self):
+        self.stop()
+        os.unlink(self.log.name)
+
+    # ---- HTTP -----------------------------------------------------------
+
+    def request(self, method, path, body=None, headers=None, timeout=60):
+        """(status, headers as a lower-cased dict, body bytes) of one request."""
+        conn = http.client.HTTPConnection("127.0.0.1", self.port, timeout=timeout)
+        try:
+            if isinstance(body, (dict, list)):
+                body = json.dumps(body)
+            conn.request(method, path, body=body, headers=headers or {})
+            response = conn.getresponse()
+            return response.status, {k.lower(): v for k, v in response.getheaders()}, response.read()
+        finally:
+            conn.close()
+
+    def post_json(self, path, body, timeout=60):
+        status, headers, data = self.request("POST", path, body, {"Content-Type": "application/json"}, timeout)
+        return status, headers, json.loads(data) if data else None
+
+    def raw(self, data, timeout=10):
+        """Sends raw bytes, returns every byte the server sends until it closes."""
+        with socket.create_connection(("127.0.0.1", self.port), timeout=timeout) as s:
+            s.sendall(data)
+            chunks = []
+            try:
+                while True:
+                    chunk = s.recv(65536)
+                    if not chunk:
+                        break
+                    chunks.append(chunk)
+            except (ConnectionResetError, socket.timeout):
+                pass
+            return b"".join(chunks)
+
+    def metric(self, name):
+        """The value of an unlabelled metric line `name V`, or of the sum of `name{...} V` lines."""
+        _, _, body = self.request("GET", "/metrics")
+        total = None
+        for line in body.decode().splitlines():
+            if line.startswith(name + " ") or line.startswith(name + "{"):
+                total = (total or 0) + float(line.rsplit(" ", 1)[1])
+        return total

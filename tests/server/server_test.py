@@ -1,0 +1,420 @@
+#!/usr/bin/env python3
+"""End-to-end tests of implicitizer-server: the real binary on an ephemeral loopback
+port, spoken to over real sockets (no mocks). Usage: server_test.py PATH/TO/implicitizer-server
+Registered with ctest as server.integration (server/CMakeLists.txt)."""
+
+import json
+import os
+import socket
+import sys
+import tempfile
+import threading
+import time
+import traceback
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from server_harness import Server  # noqa: E402
+
+BIN = sys.argv[1]
+SPHERE = {"x": "2*s/(1+s^2+t^2)", "y": "2*t/(1+s^2+t^2)", "z": "(1-s^2-t^2)/(1+s^2+t^2)"}
+# Takes far longer than any timeout used here (> 15 s with the current engine).
+SLOW = {"x": "s^3+t^2*s", "y": "t^3-s", "z": "s*t^2+t^4"}
+SECRET = "top-secret-outside-static"
+
+failures = []
+checks = 0
+
+
+def check(condition, message):
+    global checks
+    checks += 1
+    if not condition:
+        failures.append(message)
+        print("FAIL:", message)
+
+
+def error_code(body):
+    try:
+        return body["error"]["code"]
+    except (TypeError, KeyError):
+        return None
+
+
+def make_static_tree():
+    base = tempfile.mkdtemp(prefix="implicitizer-static-")
+    root = os.path.join(base, "web")
+    os.makedirs(os.path.join(root, "sub"))
+    with open(os.path.join(root, "index.html"), "w") as f:
+        f.write("<!doctype html><title>t</title>home")
+    with open(os.path.join(root, "app.js"), "w") as f:
+        f.write("console.log(1);")
+    with open(os.path.join(base, "secret.txt"), "w") as f:
+        f.write(SECRET)
+    os.symlink(os.path.join(base, "secret.txt"), os.path.join(root, "escape.txt"))
+    os.symlink(base, os.path.join(root, "escape_dir"))
+    return base, root
+
+
+# ---- the main server ------------------------------------------------------
+
+def test_healthz_and_static(s):
+    status, headers, body = s.request("GET", "/healthz")
+    check(status == 200 and json.loads(body) == {"status": "ok"}, "healthz: %s %r" % (status, body))
+    check(headers.get("content-type") == "application/json", "healthz content type")
+    status, headers, body = s.request("HEAD", "/healthz")
+    check(status == 200 and body == b"" and headers.get("content-length") == "15", "HEAD /healthz")
+    status, headers, body = s.request("GET", "/")
+    check(status == 200 and b"home" in body and headers["content-type"].startswith("text/html"), "GET /")
+    status, headers, body = s.request("GET", "/app.js")
+    check(status == 200 and headers["content-type"].startswith("text/javascript"), "GET /app.js")
+
+
+def test_implicitize_sphere(s):
+    status, headers, body = s.post_json("/v1/implicitize", SPHERE)
+    check(status == 200, "sphere status %s %r" % (status, body))
+    check(body["implicit"] == "x^2+y^2+z^2-1", "sphere equation %r" % body.get("implicit"))
+    check(body["verified"] is True and body["degree"] == 2 and body["variables"] == ["x", "y", "z"],
+          "sphere verified/degree/variables")
+    check(body["method"] == "groebner" and isinstance(body["elapsed_ms"], (int, float)), "sphere method, elapsed")
+    for key in ("pairs", "product_criterion", "chain_criterion", "reductions", "zero_reductions"):
+        check(key in body["stats"], "stats has " + key)
+    check("eliminate" in body["reproduce"]["singular"] and "eliminate" in body["reproduce"]["macaulay2"],
+          "reproduce scripts")
+    check(headers.get("x-cache") == "miss", "first sphere request misses the cache")
+
+
+def test_cache(s):
+    hits = s.metric("implicitizer_cache_hits_total")
+    # Same request, other key order, spacing and timeout: the same canonical request.
+    body = '{ "z": "%s", "y": "%s", "x": "%s", "timeout_ms": 9000 }' % (SPHERE["z"], SPHERE["y"], SPHERE["x"])
+    status, headers, data = s.request("POST", "/v1/implicitize", body)
+    check(status == 200 and headers.get("x-cache") == "hit", "repeated request is a cache hit: %s" % headers)
+    check(json.loads(data)["implicit"] == "x^2+y^2+z^2-1", "cached answer")
+    check(s.metric("implicitizer_cache_hits_total") == hits + 1, "metrics count the hit")
+    check(s.metric("implicitizer_cache_entries") >= 1, "metrics show the cache size")
+
+
+def test_groebner(s):
+    status, _, body = s.post_json("/v1/groebner", {"polynomials": ["x^2+y^2-1", "x-y"], "order": "lex"})
+    check(status == 200 and body["basis"] == ["y^2-1/2", "x-y"] and body["order"] == "lex", "groebner %r" % body)
+    check(set(body["stats"]) >= {"pairs", "product_criterion", "chain_criterion", "reductions", "zero_reductions"},
+          "groebner stats")
+    status, _, body = s.post_json("/v1/groebner", {"polynomials": ["x-s^2", "y-s^3"], "variables": ["s", "x", "y"],
+                                                   "eliminate": ["s"]})
+    check(status == 200 and body.get("elimination_ideal") == ["x^3-y^2"], "groebner elimination %r" % body)
+
+
+def test_input_errors(s):
+    cases = [
+        (b'{"x": "s", "y": ', "invalid_json"),
+        (b'[1, 2]', "wrong_type"),
+        (b'{"x": 1, "y": "t", "z": "s"}', "wrong_type"),
+        (b'{"x": "s", "y": "t"}', "missing_field"),
+        (b'{"x": "s", "y": "t", "z": "s", "colour": 1}', "unknown_field"),
+        (b'{"x": "s", "x": "s", "y": "t", "z": "s"}', "duplicate_field"),
+        (b'[' * 5000 + b']' * 5000, "json_too_deep"),
+        (b'{"x": "\xff\xfe", "y": "t", "z": "s"}', "invalid_json"),
+        (b'{"x": "s", "y": "t", "z": "s", "timeout_ms": -1}', "invalid_value"),
+        (b'{"x": "s^", "y": "t", "z": "s"}', None),  # a parse error of the expression
+        (b'{"x": "s", "y": "t", "z": "s", "method": "magic"}', "unknown_method"),
+        (b'', "invalid_json"),
+    ]
+    for body, code in cases:
+        status, headers, data = s.request("POST", "/v1/implicitize", body, {"Content-Type": "application/json"})
+        parsed = json.loads(data)
+        check(status == 400, "%r: status %s" % (body[:40], status))
+        check(code is None or error_code(parsed) == code, "%r: code %r, want %r" % (body[:40], parsed, code))
+        check(isinstance(parsed["error"].get("message"), str), "%r: message" % body[:40])
+    _, _, data = s.request("POST", "/v1/implicitize", b'{"x": "s", "y": ')
+    check(json.loads(data)["error"].get("position") == 16, "invalid JSON position: %r" % data)
+    _, _, data = s.request("POST", "/v1/implicitize", b'{"x": "s+*t", "y": "t", "z": "s"}')
+    err = json.loads(data)["error"]
+    check(err.get("position") == 2 and err.get("field") == "x", "expression error position: %r" % err)
+
+
+def test_semantic_errors(s):
+    status, _, body = s.post_json("/v1/implicitize", {"x": "t", "y": "t^2", "z": "t^3"})
+    check(status == 422 and error_code(body) == "no_single_equation", "curve: %s %r" % (status, body))
+    start = time.time()
+    status, _, body = s.post_json("/v1/implicitize", dict(SLOW, timeout_ms=300))
+    elapsed = time.time() - start
+    check(status == 504 and error_code(body) == "time_limit_exceeded", "timeout: %s %r" % (status, body))
+    check(elapsed < 5, "timeout answered in %.1f s" % elapsed)
+
+
+def test_routing_errors(s):
+    for path in ("/v1/nope", "/nope.html", "/v1"):
+        status, _, body = s.request("GET", path)
+        check(status == 404 and error_code(json.loads(body)) == "not_found", "404 %s: %s" % (path, status))
+    status, headers, body = s.request("GET", "/v1/implicitize")
+    check(status == 405 and headers.get("allow") == "POST, OPTIONS", "405 GET implicitize: %s %s" % (status, headers))
+    check(error_code(json.loads(body)) == "method_not_allowed", "405 body")
+    status, headers, _ = s.request("DELETE", "/healthz")
+    check(status == 405 and headers.get("allow") == "GET, HEAD, OPTIONS", "405 DELETE healthz")
+    status, headers, _ = s.request("PUT", "/index.html", b"x")
+    check(status == 405, "405 PUT static: %s" % status)
+
+
+def test_size_limits(s, max_body):
+    big = b'{"x": "' + b"s+" * max_body + b's", "y": "t", "z": "s"}'
+    status, _, data = s.request("POST", "/v1/implicitize", big)
+    check(status == 413 and error_code(json.loads(data)) == "body_too_large", "413 body: %s %r" % (status, data[:80]))
+    # The header alone announces too much: answered before the body is sent.
+    raw = s.raw(b"POST /v1/groebner HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n" % (max_body * 10))
+    check(raw.startswith(b"HTTP/1.1 413"), "413 from Content-Length: %r" % raw[:40])
+    status, _, data = s.request("GET", "/healthz", headers={"X-Big": "a" * 20000})
+    check(status == 431 and error_code(json.loads(data)) == "headers_too_large", "431: %s" % status)
+    raw = s.raw(b"GARBAGE\r\n\r\n")
+    check(raw.startswith(b"HTTP/1.1 400") and b'"bad_request"' in raw, "malformed HTTP: %r" % raw[:60])
+    status, _, body = s.post_json("/v1/groebner", {"polynomials": ["x^100000"]})
+    check(status == 400 and error_code(body) == "exponent_too_large", "exponent limit: %s %r" % (status, body))
+
+
+def test_path_traversal(s):
+    targets = ["/../secret.txt", "/sub/../../secret.txt", "/%2e%2e/secret.txt", "/%2E%2E/%2E%2E/secret.txt",
+               "/..%2fsecret.txt", "/..%5csecret.txt", "/escape.txt", "/escape_dir/secret.txt",
+               "/%2fetc%2fpasswd", "//etc/passwd", "/app.js%00", "/.%2e/secret.txt"]
+    for target in targets:
+        raw = s.raw(b"GET " + target.encode() + b" HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n")
+        status = raw[9:12]
+        check(status in (b"400", b"404") and SECRET.encode() not in raw,
+              "traversal %s answered %r" % (target, raw[:60]))
+    raw = s.raw(b"GET http://evil/secret.txt HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n")
+    check(raw[9:12] == b"400", "absolute-form target: %r" % raw[:40])
+
+
+def test_slow_headers_dropped(s, read_timeout_s):
+    with socket.create_connection(("127.0.0.1", s.port), timeout=10) as sock:
+        sock.sendall(b"GET /healthz HTTP/1.1\r\nHost: x\r\n")  # never finishes the header
+        start = time.time()
+        data = sock.recv(1024)
+        elapsed = time.time() - start
+    check(data == b"" and read_timeout_s * 0.5 < elapsed < read_timeout_s + 3,
+          "slow headers dropped after %.2f s (got %r)" % (elapsed, data[:40]))
+    # Trickling bytes does not help: the timeout covers the whole header.
+    with socket.create_connection(("127.0.0.1", s.port), timeout=10) as sock:
+        start = time.time()
+        closed = False
+        for ch in b"GET /healthz HTTP/1.1\r\nX-Slow: " + b"a" * 100:
+            try:
+                sock.sendall(bytes([ch]))
+            except OSError:
+                closed = True
+                break
+            time.sleep(0.1)
+            if time.time() - start > read_timeout_s + 3:
+                break
+        if not closed:
+            try:
+                closed = sock.recv(1024) == b""
+            except OSError:
+                closed = True
+        check(closed and time.time() - start < read_timeout_s + 3, "trickling client dropped")
+
+
+def test_keep_alive_cap(s, cap):
+    import http.client
+    conn = http.client.HTTPConnection("127.0.0.1", s.port, timeout=10)
+    closes = []
+    for _ in range(cap):
+        conn.request("GET", "/healthz")
+        r = conn.getresponse()
+        r.read()
+        closes.append(r.getheader("Connection"))
+    conn.close()
+    check(closes[:-1] == [None] * (cap - 1) and closes[-1] == "close", "keep-alive cap: %r" % closes)
+
+
+def test_cors(s):
+    status, headers, _ = s.request("OPTIONS", "/v1/implicitize", headers={
+        "Origin": "https://example.org", "Access-Control-Request-Method": "POST",
+        "Access-Control-Request-Headers": "content-type"})
+    check(status == 204 and headers.get("access-control-allow-origin") == "*"
+          and "POST" in headers.get("access-control-allow-methods", "")
+          and "Content-Type" in headers.get("access-control-allow-headers", ""), "preflight: %s %s" % (status, headers))
+    status, headers, _ = s.request("POST", "/v1/groebner", b'{"polynomials": ["x"]}',
+                                   {"Origin": "https://example.org", "Content-Type": "application/json"})
+    check(status == 200 and headers.get("access-control-allow-origin") == "*", "CORS on POST")
+
+
+def test_disconnect_cancels(s):
+    before = s.metric("implicitizer_computations_cancelled_total")
+    body = json.dumps(dict(SLOW, timeout_ms=30000)).encode()
+    with socket.create_connection(("127.0.0.1", s.port), timeout=10) as sock:
+        sock.sendall(b"POST /v1/implicitize HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+                     b"Content-Length: %d\r\n\r\n" % len(body) + body)
+        time.sleep(0.5)
+    start = time.time()
+    while time.time() < start + 20 and s.metric("implicitizer_computations_cancelled_total") == before:
+        time.sleep(0.1)
+    _, _, text = s.request("GET", "/metrics")
+    outcomes = [line for line in text.decode().splitlines() if line.startswith("implicitizer_computations_total")]
+    check(s.metric("implicitizer_computations_cancelled_total") == before + 1,
+          "disconnect cancels the computation (after %.1f s): %s" % (time.time() - start, outcomes))
+    # The outcome is counted just before the worker is released: allow it a moment.
+    deadline = time.time() + 5
+    while time.time() < deadline and s.metric("implicitizer_workers_busy") != 0:
+        time.sleep(0.05)
+    check(s.metric("implicitizer_workers_busy") == 0, "the worker is free again")
+
+
+def test_concurrent_clients(s, n=64):
+    results = [None] * n
+
+    def client(k):
+        try:
+            status, _, body = s.post_json("/v1/implicitize", {"x": "s", "y": "t", "z": "s^2+%d*t^2" % (k + 2)})
+            results[k] = (status, body.get("implicit"))
+        except Exception as e:  # noqa: BLE001 - reported as a failure below
+            results[k] = ("exception", repr(e))
+
+    threads = [threading.Thread(target=client, args=(k,)) for k in range(n)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(120)
+    wrong = [(k, r) for k, r in enumerate(results) if r != (200, "x^2+%d*y^2-z" % (k + 2))]
+    check(not wrong, "%d concurrent clients, wrong answers: %r" % (n, wrong[:5]))
+
+
+def test_metrics_format(s):
+    status, headers, body = s.request("GET", "/metrics")
+    text = body.decode()
+    check(status == 200 and headers["content-type"].startswith("text/plain"), "metrics status/type")
+    for needle in ('implicitizer_http_requests_total{endpoint="/v1/implicitize",status="200"}',
+                   'implicitizer_http_requests_total{endpoint="other",status="404"}',
+                   'implicitizer_http_request_duration_seconds_bucket{endpoint="/healthz",le="+Inf"}',
+                   'implicitizer_computation_duration_seconds_count{endpoint="/v1/implicitize"}',
+                   "# TYPE implicitizer_queue_depth gauge", "implicitizer_cache_misses_total",
+                   "implicitizer_queue_rejections_total"):
+        check(needle in text, "metrics contain " + needle)
+    for line in text.splitlines():
+        if line and not line.startswith("#"):
+            name_labels, value = line.rsplit(" ", 1)
+            try:
+                float(value)
+            except ValueError:
+                check(False, "metrics line with a non-numeric value: " + line)
+
+
+# ---- a server with one worker and a queue of one ---------------------------
+
+def test_overload():
+    s = Server(BIN, "--threads", "1", "--queue-size", "1", "--retry-after", "2", "--quiet")
+    try:
+        body = json.dumps(dict(SLOW, timeout_ms=20000)).encode()
+        socks = []
+        for _ in range(2):  # one runs, one waits
+            sock = socket.create_connection(("127.0.0.1", s.port), timeout=30)
+            sock.sendall(b"POST /v1/implicitize HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n" % len(body) + body)
+            socks.append(sock)
+        deadline = time.time() + 5
+        while time.time() < deadline and s.metric("implicitizer_queue_depth") != 1:
+            time.sleep(0.05)
+        status, headers, data = s.post_json("/v1/implicitize", dict(SLOW, timeout_ms=20000))
+        check(status == 503 and headers.get("retry-after") == "2" and error_code(data) == "overloaded",
+              "full queue: %s %s %r" % (status, headers, data))
+        status, _, _ = s.request("GET", "/healthz")
+        check(status == 200, "healthz answers while the workers are busy")
+        for sock in socks:
+            sock.close()
+        check(s.metric("implicitizer_queue_rejections_total") == 1, "rejection counted")
+    finally:
+        s.close()
+
+
+# ---- a server with a small term limit ----------------------------------------
+
+def test_term_limit():
+    # Its own server: with a small --max-terms the slow surface of the other tests
+    # would stop early on the size limit instead of running.
+    s = Server(BIN, "--max-terms", "2000", "--quiet")
+    try:
+        status, _, body = s.post_json("/v1/groebner", {"polynomials": ["(x+y+z+1)^30"]})
+        check(status == 413 and error_code(body) == "size_limit_exceeded", "size limit: %s %r" % (status, body))
+        status, _, body = s.post_json("/v1/implicitize", SPHERE)
+        check(status == 200, "small problems pass under the term limit: %s" % status)
+    finally:
+        s.close()
+
+
+# ---- graceful shutdown -------------------------------------------------------
+
+def test_shutdown():
+    s = Server(BIN, "--threads", "1", "--shutdown-grace-ms", "300", "--quiet")
+    answer = {}
+
+    def client():
+        answer["r"] = s.post_json("/v1/implicitize", dict(SLOW, timeout_ms=30000), timeout=30)
+
+    t = threading.Thread(target=client)
+    t.start()
+    time.sleep(0.5)
+    start = time.time()
+    code = s.stop(timeout=15)
+    t.join(15)
+    check(code == 0, "SIGTERM exits 0 (got %r)" % code)
+    check(time.time() - start < 5, "shutdown within the grace period and a little")
+    status, _, body = answer.get("r", (None, None, None))
+    check(status == 503 and error_code(body) == "cancelled", "in-flight request answered at shutdown: %s %r"
+          % (status, body))
+    os.unlink(s.log.name)
+
+
+def main():
+    base, root = make_static_tree()
+    max_body = 65536
+    read_timeout_ms = 1000
+    keep_alive = 5
+    s = Server(BIN, "--static", root, "--threads", "2", "--max-body-bytes", str(max_body),
+               "--read-timeout-ms", str(read_timeout_ms), "--keep-alive-requests", str(keep_alive),
+               "--cache-size", "16")
+    tests = [
+        lambda: test_healthz_and_static(s),
+        lambda: test_implicitize_sphere(s),
+        lambda: test_cache(s),
+        lambda: test_groebner(s),
+        lambda: test_input_errors(s),
+        lambda: test_semantic_errors(s),
+        lambda: test_routing_errors(s),
+        lambda: test_size_limits(s, max_body),
+        lambda: test_path_traversal(s),
+        lambda: test_slow_headers_dropped(s, read_timeout_ms / 1000),
+        lambda: test_keep_alive_cap(s, keep_alive),
+        lambda: test_cors(s),
+        lambda: test_disconnect_cancels(s),
+        lambda: test_concurrent_clients(s),
+        lambda: test_metrics_format(s),
+        test_overload,
+        test_term_limit,
+        test_shutdown,
+    ]
+    try:
+        for test in tests:
+            try:
+                test()
+            except Exception:  # noqa: BLE001 - a crash of one test is a failure, the others still run
+                failures.append(traceback.format_exc())
+                print("FAIL (exception):", traceback.format_exc())
+        alive = s.proc.poll() is None
+        check(alive, "the server survived everything")
+        code = s.stop()
+        check(code == 0, "main server exits 0 on SIGTERM (got %r)" % code)
+        log = s.log_text()
+        lines = [line for line in log.splitlines() if line.startswith("{")]
+        check(lines and all(set(json.loads(line)) == {"method", "path", "status", "ms", "bytes"} for line in lines),
+              "access log is JSON lines")
+    finally:
+        if failures:
+            print("---- server log (tail) ----")
+            print(s.log_text()[-3000:])
+        s.close()
+        import shutil
+        shutil.rmtree(base, ignore_errors=True)
+    print("%d checks, %d failed" % (checks, len(failures)))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
