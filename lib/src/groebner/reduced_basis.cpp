@@ -76,7 +76,8 @@ bool is_reduced(std::span<const Polynomial> basis) {
     if (g.is_zero() || g.leading_coefficient() != 1) return false;
     const Ring& ring = *g.ring();
     for (std::size_t j = 0; j < basis.size(); ++j) {
-      if (i == j) continue;
+      // A zero element has no leading monomial; it fails the check on its own turn.
+      if (i == j || basis[j].is_zero()) continue;
       const std::int32_t* lead = basis[j].leading_monomial();
       for (std::size_t t = 0; t < g.num_terms(); ++t) {
         if (ring.divides(lead, g.monomial(t))) return false;
