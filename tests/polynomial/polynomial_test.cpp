@@ -80,6 +80,15 @@ TEST_F(PolynomialTest, ZeroConstantsVariablesTerms) {
   EXPECT_THROW(Polynomial::term(ring_, Rational(1), short_e), std::invalid_argument);
 }
 
+// A ring without variables holds only constants; its monomials have no words, and
+// the product must not index its empty scratch vector (found by fuzz/).
+TEST(PolynomialWithoutVariables, ConstantsMultiply) {
+  const RingPtr ring = Ring::make({});
+  const Polynomial p = Polynomial::constant(ring, Rational(2)) * Polynomial::constant(ring, Rational(3));
+  EXPECT_EQ(p, Polynomial::constant(ring, Rational(6)));
+  EXPECT_EQ(p.pow(3), Polynomial::constant(ring, Rational(216)));
+}
+
 TEST_F(PolynomialTest, ContentTimesPrimitivePart) {
   const Polynomial p = parse("6x+4y");
   EXPECT_EQ(p.content(), Rational(2));

@@ -203,12 +203,14 @@ Polynomial Polynomial::multiply(const Polynomial& other, const Budget& budget) c
   const Ring& ring = *ring_;
   const std::size_t w = ring.monomial_size();
   const std::size_t na = a.num_terms(), nb = b.num_terms();
+  // data() + i·w, not &product[i·w]: a ring without variables has w = 0 and an empty
+  // vector, whose operator[] is undefined even for index 0 (found by fuzz/).
   std::vector<std::size_t> next(na, 0);          // next term of b for row i
   std::vector<std::int32_t> product(na * w);     // current product monomial of row i
-  auto less = [&](std::size_t i, std::size_t j) { return ring.compare(&product[i * w], &product[j * w]) < 0; };
+  auto less = [&](std::size_t i, std::size_t j) { return ring.compare(product.data() + i * w, product.data() + j * w) < 0; };
   std::priority_queue<std::size_t, std::vector<std::size_t>, decltype(less)> heap(less);
   for (std::size_t i = 0; i < na; ++i) {
-    ring.multiply(a.monomial(i), b.monomial(0), &product[i * w]);
+    ring.multiply(a.monomial(i), b.monomial(0), product.data() + i * w);
     heap.push(i);
   }
   std::vector<Integer> c;
@@ -217,7 +219,7 @@ Polynomial Polynomial::multiply(const Polynomial& other, const Budget& budget) c
   while (!heap.empty()) {
     const std::size_t i = heap.top();
     heap.pop();
-    const std::int32_t* mono = &product[i * w];
+    const std::int32_t* mono = product.data() + i * w;
     if (!m.empty() && ring.compare(&m[m.size() - w], mono) == 0) {
       mpz_addmul(c.back().get_mpz_t(), a.coefficients_[i].get_mpz_t(), b.coefficients_[next[i]].get_mpz_t());
     } else {
@@ -229,7 +231,7 @@ Polynomial Polynomial::multiply(const Polynomial& other, const Budget& budget) c
       m.insert(m.end(), mono, mono + w);
     }
     if (++next[i] < nb) {
-      ring.multiply(a.monomial(i), b.monomial(next[i]), &product[i * w]);
+      ring.multiply(a.monomial(i), b.monomial(next[i]), product.data() + i * w);
       heap.push(i);
     }
     if ((++steps & 0xfff) == 0) budget.check_terms(c.size(), "polynomial multiplication");
