@@ -92,7 +92,7 @@ class BuchbergerDriver {
   std::int32_t sugar_of(const IntPolynomial& p) const {
     const std::size_t w = ring_->monomial_size();
     std::int32_t d = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) d = std::max(d, ring_->sugar_degree(&p.monomials[i * w]));
+    for (std::size_t i = 0; i < p.size(); ++i) d = std::max(d, ring_->sugar_degree(p.monomials.data() + i * w));
     return d;
   }
 

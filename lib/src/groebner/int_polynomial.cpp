@@ -60,7 +60,7 @@ void combine(const Ring& ring, const Integer& fa, IntPolynomial& f, std::size_t 
   bool have_shifted = false;
   while (i < f.size() || j < g.size()) {
     if (j < g.size() && !have_shifted) {
-      ring.multiply(&g.monomials[j * w], shift, shifted.data());
+      ring.multiply(g.monomials.data() + j * w, shift, shifted.data());
       have_shifted = true;
     }
     int cmp;
@@ -69,12 +69,12 @@ void combine(const Ring& ring, const Integer& fa, IntPolynomial& f, std::size_t 
     } else if (j == g.size()) {
       cmp = 1;
     } else {
-      cmp = ring.compare(&f.monomials[i * w], shifted.data());
+      cmp = ring.compare(f.monomials.data() + i * w, shifted.data());
     }
     if (cmp > 0) {
       out.coefficients.push_back(std::move(f.coefficients[i]));
       if (scale_f) mpz_mul(out.coefficients.back().get_mpz_t(), out.coefficients.back().get_mpz_t(), fa.get_mpz_t());
-      out.monomials.insert(out.monomials.end(), &f.monomials[i * w], &f.monomials[i * w] + w);
+      out.monomials.insert(out.monomials.end(), f.monomials.data() + i * w, f.monomials.data() + i * w + w);
       ++i;
     } else if (cmp < 0) {
       out.coefficients.emplace_back(-ga * g.coefficients[j]);
@@ -118,7 +118,7 @@ IntPolynomial reduce(const Ring& ring, IntPolynomial f, const std::vector<Reduce
   std::size_t since_content = 0;
   std::size_t start = 0;  // f's terms before `start` were moved to `done` (full reduction)
   while (start < f.size()) {
-    const std::int32_t* lead = &f.monomials[start * w];
+    const std::int32_t* lead = f.monomials.data() + start * w;
     const Reducer* r = find_reducer(ring, lead, reducers);
     if (r == nullptr) {
       if (!full) break;
@@ -179,7 +179,7 @@ IntPolynomial s_polynomial(const Ring& ring, const IntPolynomial& f, const IntPo
   shifted_f.monomials.resize((f.size() - 1) * w);
   for (std::size_t i = 1; i < f.size(); ++i) {
     shifted_f.coefficients.push_back(f.coefficients[i]);
-    ring.multiply(&f.monomials[i * w], sf.data(), &shifted_f.monomials[(i - 1) * w]);
+    ring.multiply(f.monomials.data() + i * w, sf.data(), shifted_f.monomials.data() + (i - 1) * w);
   }
   IntPolynomial out;
   combine(ring, fa, shifted_f, 0, ga, sg.data(), g, 1, out);

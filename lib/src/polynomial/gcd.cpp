@@ -68,7 +68,7 @@ Polynomial from_flint(FlintPolynomial& f, FlintContext& ctx, const RingPtr& ring
     fmpz_get_mpz(coefficients[t].get_mpz_t(), c);
     fmpz_mpoly_get_term_exp_ui(e.data(), f.get(), t, ctx.get());
     for (std::size_t i = 0; i < n; ++i) e32[i] = static_cast<std::int32_t>(e[i]);
-    ring->encode(e32.data(), &monomials[static_cast<std::size_t>(t) * w]);
+    ring->encode(e32.data(), monomials.data() + static_cast<std::size_t>(t) * w);
   }
   fmpz_clear(c);
   return Polynomial::from_terms(ring, content, std::move(coefficients), std::move(monomials));

@@ -32,21 +32,21 @@ void merge_scaled(const Ring& ring, const Integer& a, const std::vector<Integer>
     } else if (j == bc.size()) {
       cmp = 1;
     } else {
-      cmp = ring.compare(&am[i * w], &bm[j * w]);
+      cmp = ring.compare(am.data() + i * w, bm.data() + j * w);
     }
     if (cmp > 0) {
       out_c.emplace_back(a * ac[i]);
-      out_m.insert(out_m.end(), &am[i * w], &am[i * w] + w);
+      out_m.insert(out_m.end(), am.data() + i * w, am.data() + i * w + w);
       ++i;
     } else if (cmp < 0) {
       out_c.emplace_back(b * bc[j]);
-      out_m.insert(out_m.end(), &bm[j * w], &bm[j * w] + w);
+      out_m.insert(out_m.end(), bm.data() + j * w, bm.data() + j * w + w);
       ++j;
     } else {
       Integer c = a * ac[i] + b * bc[j];
       if (c != 0) {
         out_c.push_back(std::move(c));
-        out_m.insert(out_m.end(), &am[i * w], &am[i * w] + w);
+        out_m.insert(out_m.end(), am.data() + i * w, am.data() + i * w + w);
       }
       ++i;
       ++j;
@@ -113,7 +113,7 @@ Polynomial Polynomial::from_terms(RingPtr ring, const Rational& content, std::ve
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return ring->compare(&monomials[a * w], &monomials[b * w]) > 0;
+    return ring->compare(monomials.data() + a * w, monomials.data() + b * w) > 0;
   });
   std::vector<Integer> c;
   std::vector<std::int32_t> m;
@@ -123,13 +123,13 @@ Polynomial Polynomial::from_terms(RingPtr ring, const Rational& content, std::ve
     const std::size_t first = order[k];
     Integer sum = std::move(coefficients[first]);
     std::size_t next = k + 1;
-    while (next < n && ring->compare(&monomials[order[next] * w], &monomials[first * w]) == 0) {
+    while (next < n && ring->compare(monomials.data() + order[next] * w, monomials.data() + first * w) == 0) {
       sum += coefficients[order[next]];
       ++next;
     }
     if (sum != 0) {
       c.push_back(std::move(sum));
-      m.insert(m.end(), &monomials[first * w], &monomials[first * w] + w);
+      m.insert(m.end(), monomials.data() + first * w, monomials.data() + first * w + w);
     }
     k = next;
   }
@@ -374,7 +374,7 @@ Polynomial Polynomial::map_to(const RingPtr& target, std::span<const std::size_t
       if (var_map[i] >= e.size()) throw std::out_of_range("map_to: target index out of range");
       e[var_map[i]] += ex[i];
     }
-    target->encode(e.data(), &m[t * w]);
+    target->encode(e.data(), m.data() + t * w);
   }
   return from_terms(target, content_, coefficients_, std::move(m));
 }
@@ -388,7 +388,7 @@ Polynomial Polynomial::homogenize(std::size_t var) const {
   for (std::size_t t = 0; t < num_terms(); ++t) {
     std::vector<std::int32_t> e = exponents(t);
     e[var] = d - ring_->total_degree(monomial(t));
-    ring_->encode(e.data(), &m[t * w]);
+    ring_->encode(e.data(), m.data() + t * w);
   }
   return from_terms(ring_, content_, coefficients_, std::move(m));
 }
