@@ -9,7 +9,7 @@ CMAKE ?= cmake
 CTEST ?= ctest
 CLANG_FORMAT ?= clang-format
 
-.PHONY: all deps configure build test run bench load clean format
+.PHONY: all deps configure build test fuzz run bench load clean format
 
 all: build
 
@@ -34,9 +34,17 @@ build: configure
 
 # `test` and `run` install what is missing first; `build` alone does not, so that it
 # works without root on a machine that already has everything.
+# After ctest, a bounded libFuzzer run (FUZZ_SECONDS per target, in build-fuzz/ with
+# clang; skipped with a message when clang cannot link libFuzzer). `make fuzz` is the
+# longer run of docs/fuzzing.md.
+FUZZ_SECONDS ?= 20
 test: deps
 	$(MAKE) build
 	$(CTEST) --test-dir $(BUILD_DIR) --output-on-failure --no-tests=error -j$(JOBS)
+	FUZZ_SEED=1 ./scripts/fuzz.sh --seconds $(FUZZ_SECONDS) --jobs $(JOBS)
+
+fuzz: deps
+	./scripts/fuzz.sh --seconds 300 --jobs $(JOBS)
 
 # Ctrl-C stops the server gracefully (SIGINT: in-flight work finishes or is cancelled).
 run: deps

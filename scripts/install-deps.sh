@@ -16,8 +16,9 @@ packages=(
   googletest libgtest-dev libgmock-dev
   singular macaulay2
   glslang-tools
-  python3
-  clang clang-format
+  python3 python3-yaml
+  clang clang-format libclang-rt-dev
+  wrk nginx
 )
 
 if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then

@@ -1,0 +1,50 @@
+/// \file
+/// libFuzzer target for the HTTP request decoders (server/codec's json_codec.hpp).
+///
+/// On any bytes, decode_implicitize_request() and decode_groebner_request() may only
+/// return or throw InputError: malformed or non-UTF-8 JSON, deep nesting, wrong types,
+/// unknown or duplicate fields all have their code. A decoded request's expressions
+/// then go through parse_expression(), as the handlers do, under the same rule. The
+/// algebra itself is not run (it is bounded by time, not by input size).
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/polynomial/expression.hpp"
+
+namespace {
+
+using namespace implicitizer;
+
+void parse_field(const std::string& text) {
+  try {
+    (void)parse_expression(text);
+  } catch (const InputError&) {
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view body(reinterpret_cast<const char*>(data), size);
+  try {
+    const ImplicitizeRequest request = decode_implicitize_request(body);
+    parse_field(request.x);
+    parse_field(request.y);
+    parse_field(request.z);
+    if (request.parameters) {
+      for (const std::string& name : *request.parameters) (void)is_identifier(name);
+    }
+  } catch (const InputError&) {
+  }
+  try {
+    const GroebnerRequest request = decode_groebner_request(body);
+    for (const std::string& polynomial : request.polynomials) parse_field(polynomial);
+  } catch (const InputError&) {
+  }
+  return 0;
+}
