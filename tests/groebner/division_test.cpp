@@ -90,15 +90,11 @@ void expect_lex_division(const std::string& f, const std::vector<std::string>& d
 }
 
 // CLO Example 2.3.1: xy^2 + 1 by (xy + 1, y + 1) in lex.
-TEST(DivisionTest, CloExample1) {
-  expect_lex_division("x*y^2+1", {"x*y+1", "y+1"}, {{"y", "-1"}, "2"});
-}
+TEST(DivisionTest, CloExample1) { expect_lex_division("x*y^2+1", {"x*y+1", "y+1"}, {{"y", "-1"}, "2"}); }
 
 // CLO Example 2.3.2: x^2y + xy^2 + y^2 by (xy - 1, y^2 - 1) in lex; the remainder
 // collects x and y on the way, which is the point of the example.
-TEST(DivisionTest, CloExample2) {
-  expect_lex_division("x^2*y+x*y^2+y^2", {"x*y-1", "y^2-1"}, {{"x+y", "1"}, "x+y+1"});
-}
+TEST(DivisionTest, CloExample2) { expect_lex_division("x^2*y+x*y^2+y^2", {"x*y-1", "y^2-1"}, {{"x+y", "1"}, "x+y+1"}); }
 
 // The same with the divisors swapped: another quotient and remainder, so the
 // remainder of a plain list is not unique (CLO §2.3, after Example 2).

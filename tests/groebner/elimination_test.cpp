@@ -157,7 +157,8 @@ TEST(EliminationTest, RandomIdealsSatisfyTheEliminationTheorem) {
 
       const RingPtr other_ring = Ring::make(vars, MonomialOrder::block(1, MonomialOrder::lex(), remaining));
       std::vector<Polynomial> other_generators;
-      for (const auto& g : generators) other_generators.push_back(g.map_to(other_ring, std::vector<std::size_t>{0, 1, 2}));
+      for (const auto& g : generators)
+        other_generators.push_back(g.map_to(other_ring, std::vector<std::size_t>{0, 1, 2}));
       Strings expected;
       const std::optional<GroebnerResult> other = testing::compute_bounded(other_generators);
       ASSERT_TRUE(other);

@@ -117,17 +117,15 @@ inline std::vector<Polynomial> random_ideal(std::mt19937& rng, const RingPtr& ri
 
 /// The seed of the random ideals shared by the property tests.
 ///
-/// Not every seed will do, and why is a known weakness of the library rather than of
-/// these tests: with the sugar strategy forced on lex (and, less often, on the block
-/// and weighted elimination orders, where `automatic` picks it), a few percent of
-/// these tiny ideals take seconds to minutes instead of milliseconds, through
-/// coefficient swell along an unlucky pair order (see BuchbergerParams and the
-/// disabled test BuchbergerTest.DISABLED_SugarOnSmallIdealsFinishesQuickly). In
-/// some 46,000 runs (16 seeds of a denser variant of these ideals, every order and
-/// setting below) every setting that finished agreed with the others, so the
-/// blow-ups are slowness, not wrong answers. This seed's 30 ideals finish in
-/// milliseconds under every order and setting, so the sweep checks the criteria;
-/// compute_bounded() turns a future blow-up into a failure instead of a hang.
+/// Not every seed will do with today's library: under some settings (mostly the
+/// sugar strategy, or no chain criterion) a few percent of these tiny ideals take
+/// seconds instead of milliseconds through coefficient swell (see
+/// BuchbergerTest.DISABLED_SugarWithoutChainCriterionFinishesQuickly). In some
+/// 47,000 runs (16 seeds, every order and setting below) every setting that finished
+/// agreed with the others, so these are slowness, not wrong answers. This seed's 30
+/// ideals finish in milliseconds under every order and setting, so the sweep checks
+/// the criteria; compute_bounded() turns a future blow-up into a failure instead of
+/// a hang.
 inline constexpr unsigned kRandomIdealSeed = 2;
 
 /// The first `count` random ideals of kRandomIdealSeed, in `ring`: the same ideals

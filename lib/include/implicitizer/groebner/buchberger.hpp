@@ -33,10 +33,9 @@ enum class ChainCriterion {
 /// Parameters of compute_groebner_basis().
 struct BuchbergerParams {
   /// automatic by default. Elimination orders need sugar (with the normal strategy
-  /// the lcm order picks pairs by their x,y,z part first), but on other orders sugar
-  /// let coefficients explode on some small inhomogeneous ideals of tests/oracle
-  /// (a 4-generator unit ideal in grevlex: 25 s with sugar, 0.3 ms with the normal
-  /// strategy; a 3-generator lex ideal: over 10 s against 51 ms).
+  /// the lcm order picks pairs by their x,y,z part first); on other orders the normal
+  /// strategy is Buchberger's classic choice and, on the oracle tests' random ideals,
+  /// never slower (docs/algorithms.md).
   SelectionStrategy strategy = SelectionStrategy::automatic;
   /// Buchberger's first (product, coprime) criterion: lcm(lm f, lm g) = lm f · lm g.
   bool product_criterion = true;
