@@ -8,7 +8,9 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "config.hpp"
 #include "http_message.hpp"
@@ -38,6 +40,32 @@ struct HandlerContext {
   /// Reads the pool's and the cache's gauges for /metrics.
   std::function<MetricsGauges()> gauges;
 };
+
+/// Cache keys: appends `value` length-prefixed, so that no two field sequences
+/// produce the same key.
+inline void append_key_field(std::string& key, const std::string& value) {
+  key += std::to_string(value.size());
+  key += ':';
+  key += value;
+}
+
+/// Appends an optional list: '-' when absent, else its length and its items.
+template <typename T>
+inline void append_key_list(std::string& key, const std::optional<std::vector<T>>& list) {
+  if (!list) {
+    key += '-';
+    return;
+  }
+  key += 'L';
+  key += std::to_string(list->size());
+  for (const T& item : *list) {
+    if constexpr (std::is_same_v<T, std::string>) {
+      append_key_field(key, item);
+    } else {
+      append_key_field(key, std::to_string(item));
+    }
+  }
+}
 
 /// The budget of a computation whose request asked for `requested_seconds`
 /// (absent: the configured default; 0 or above the cap: the cap), with the term

@@ -3,29 +3,14 @@
 #include "implicitizer/codec/json_codec.hpp"
 
 namespace implicitizer::server {
-namespace {
-
-void append_field(std::string& key, const std::string& value) {
-  key += std::to_string(value.size());
-  key += ':';
-  key += value;
-}
-
-}  // namespace
 
 std::string canonical_key(const ImplicitizeRequest& request) {
   std::string key = "implicitize|";
-  append_field(key, request.x);
-  append_field(key, request.y);
-  append_field(key, request.z);
-  append_field(key, request.method);
-  if (request.parameters) {
-    key += 'P';
-    key += std::to_string(request.parameters->size());
-    for (const std::string& p : *request.parameters) append_field(key, p);
-  } else {
-    key += '-';
-  }
+  append_key_field(key, request.x);
+  append_key_field(key, request.y);
+  append_key_field(key, request.z);
+  append_key_field(key, request.method);
+  append_key_list(key, request.parameters);
   return key;
 }
 
