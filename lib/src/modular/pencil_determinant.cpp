@@ -1,0 +1,415 @@
+#include "implicitizer/modular/pencil_determinant.hpp"
+
+#include <flint/fmpz.h>
+#include <flint/nmod_mat.h>
+#include <flint/nmod_vec.h>
+
+#include <algorithm>
+#include <exception>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+
+namespace implicitizer {
+
+MatrixPencil::MatrixPencil(std::size_t size, std::size_t num_variables)
+    : size_(size), num_variables_(num_variables), entries_((num_variables + 1) * size * size) {}
+
+Integer MatrixPencil::entry_norm(std::size_t row, std::size_t col) const {
+  Integer norm = 0;
+  for (std::size_t part = 0; part <= num_variables_; ++part) norm += abs(at(part, row, col));
+  return norm;
+}
+
+std::size_t MatrixPencil::determinant_coefficient_bits() const {
+  std::size_t bits = 1;
+  for (std::size_t row = 0; row < size_; ++row) {
+    Integer sum = 0;
+    for (std::size_t col = 0; col < size_; ++col) sum += entry_norm(row, col);
+    if (sum == 0) return 1;  // a zero row: the determinant is 0
+    bits += mpz_sizeinbase(sum.get_mpz_t(), 2);
+  }
+  return bits;
+}
+
+namespace {
+
+// RAII for FLINT's nmod_mat.
+class ModMatrix {
+ public:
+  ModMatrix(std::size_t n, mp_limb_t p) { nmod_mat_init(m_, static_cast<slong>(n), static_cast<slong>(n), p); }
+  ~ModMatrix() { nmod_mat_clear(m_); }
+  ModMatrix(const ModMatrix&) = delete;
+  ModMatrix& operator=(const ModMatrix&) = delete;
+  nmod_mat_struct* get() { return m_; }
+
+ private:
+  nmod_mat_t m_;
+};
+
+// The pencil reduced modulo one prime, evaluated at points of a grid.
+class ModularPencil {
+ public:
+  ModularPencil(const MatrixPencil& pencil, const std::vector<std::size_t>& minor, mp_limb_t p)
+      : n_(pencil.size()), k_(pencil.num_variables()), minor_(minor), matrix_(n_, p), divisor_(minor.size(), p) {
+    nmod_init(&mod_, p);
+    reduced_.resize((k_ + 1) * n_ * n_);
+    fmpz_t c;
+    fmpz_init(c);
+    for (std::size_t part = 0; part <= k_; ++part) {
+      for (std::size_t r = 0; r < n_; ++r) {
+        for (std::size_t col = 0; col < n_; ++col) {
+          fmpz_set_mpz(c, pencil.at(part, r, col).get_mpz_t());
+          reduced_[(part * n_ + r) * n_ + col] = fmpz_fdiv_ui(c, p);
+        }
+      }
+    }
+    fmpz_clear(c);
+    // Which parts are non-zero per entry, so that sparse pencils (Macaulay's
+    // matrix) evaluate in time proportional to their non-zeros.
+    for (std::size_t part = 1; part <= k_; ++part) {
+      bool any = false;
+      for (std::size_t i = 0; i < n_ * n_ && !any; ++i) any = reduced_[part * n_ * n_ + i] != 0;
+      if (any) active_parts_.push_back(part);
+    }
+  }
+
+  // det(A(u)) mod p, or the quotient by the minor; nullopt when the minor vanishes.
+  std::optional<mp_limb_t> evaluate(const mp_limb_t* u) {
+    for (std::size_t r = 0; r < n_; ++r) {
+      for (std::size_t col = 0; col < n_; ++col) {
+        mp_limb_t v = reduced_[r * n_ + col];
+        for (std::size_t part : active_parts_) {
+          const mp_limb_t a = reduced_[(part * n_ + r) * n_ + col];
+          if (a != 0) v = nmod_add(v, nmod_mul(a, u[part - 1], mod_), mod_);
+        }
+        nmod_mat_entry(matrix_.get(), r, col) = v;
+      }
+    }
+    mp_limb_t divisor = 1;
+    if (!minor_.empty()) {
+      for (std::size_t i = 0; i < minor_.size(); ++i) {
+        for (std::size_t j = 0; j < minor_.size(); ++j) {
+          nmod_mat_entry(divisor_.get(), i, j) = nmod_mat_entry(matrix_.get(), minor_[i], minor_[j]);
+        }
+      }
+      divisor = _nmod_mat_det(divisor_.get());
+      if (divisor == 0) return std::nullopt;
+    }
+    const mp_limb_t det = _nmod_mat_det(matrix_.get());
+    return minor_.empty() ? det : nmod_mul(det, n_invmod(divisor, mod_.n), mod_);
+  }
+
+ private:
+  std::size_t n_;
+  std::size_t k_;
+  const std::vector<std::size_t>& minor_;
+  nmod_t mod_;
+  std::vector<mp_limb_t> reduced_;
+  std::vector<std::size_t> active_parts_;
+  ModMatrix matrix_;
+  ModMatrix divisor_;
+};
+
+std::size_t power(std::size_t base, std::size_t exponent) {
+  std::size_t r = 1;
+  for (std::size_t i = 0; i < exponent; ++i) r *= base;
+  return r;
+}
+
+// Exponent vectors of the grid whose total degree is at most D, with their flat index.
+struct DenseSupport {
+  std::vector<std::size_t> flat;
+  std::vector<std::vector<std::int32_t>> exponents;
+};
+
+DenseSupport support_of(std::size_t k, std::size_t points, std::int32_t degree_bound) {
+  DenseSupport s;
+  const std::size_t total = power(points, k);
+  std::vector<std::int32_t> e(k);
+  for (std::size_t flat = 0; flat < total; ++flat) {
+    std::size_t rest = flat;
+    std::int32_t degree = 0;
+    for (std::size_t v = k; v-- > 0;) {
+      e[v] = static_cast<std::int32_t>(rest % points);
+      rest /= points;
+      degree += e[v];
+    }
+    if (degree <= degree_bound) {
+      s.flat.push_back(flat);
+      s.exponents.push_back(e);
+    }
+  }
+  return s;
+}
+
+// The image of the answer modulo p: its coefficients on `support` (the exponents
+// of total degree ≤ D), or nullopt when the divisor minor vanished at a point (the
+// prime, or these nodes, are unlucky: the caller takes another prime).
+//
+// The points form the principal lattice {(x_i, y_j, z_k) : i + j + k ≤ D} on random
+// nodes, which is unisolvent for total degree ≤ D: C(D+3, 3) determinants instead
+// of the (D+1)³ of a full grid (220 against 1000 for D = 9, 1330 against 6859 for
+// D = 18). Write P = Σ_k Q_k(x, y)·N_k(z) in the Newton basis N_k of the z-nodes,
+// deg Q_k ≤ D − k. At (x_i, y_j) the first D − i − j + 1 values along z fix the
+// first Newton coefficients Q_k(x_i, y_j), k ≤ D − i − j, since divided
+// differences only look at the values before them. Each Q_k is then a problem of
+// the same shape with degree D − k, one dimension lower. Finally the Newton
+// coefficients are converted to monomial ones along each axis (Horner).
+std::optional<std::vector<mp_limb_t>> image_modulo(const MatrixPencil& pencil, const PencilDeterminantOptions& options,
+                                                   const DenseSupport& support, mp_limb_t p, std::uint64_t seed,
+                                                   std::size_t& evaluations) {
+  const std::size_t k = pencil.num_variables();
+  const std::int32_t degree = options.degree_bound;
+  const std::size_t points = static_cast<std::size_t>(degree) + 1;
+  ModularPencil modular(pencil, options.divisor_minor, p);
+  nmod_t mod;
+  nmod_init(&mod, p);
+
+  // Distinct random nodes per variable: random rather than 0, 1, 2, … so that no
+  // structure of the input (a minor that vanishes at u = 0) meets the lattice.
+  ResidueStream stream(seed ^ p);
+  std::vector<std::vector<mp_limb_t>> nodes(k);
+  for (auto& list : nodes) {
+    while (list.size() < points) {
+      const mp_limb_t v = stream.next(p);
+      if (std::find(list.begin(), list.end(), v) == list.end()) list.push_back(v);
+    }
+  }
+  std::vector<std::size_t> stride(k, 1);
+  for (std::size_t v = k; v-- > 1;) stride[v - 1] = stride[v] * points;
+
+  std::vector<mp_limb_t> values(stride.empty() ? 1 : stride[0] * points);
+  std::vector<mp_limb_t> u(k);
+  for (std::size_t s = 0; s < support.flat.size(); ++s) {
+    if (s % points == 0) options.budget.check("determinant evaluation");
+    for (std::size_t v = 0; v < k; ++v) u[v] = nodes[v][static_cast<std::size_t>(support.exponents[s][v])];
+    const auto value = modular.evaluate(u.data());
+    ++evaluations;
+    if (!value) return std::nullopt;
+    values[support.flat[s]] = *value;
+  }
+
+  // The lines along `axis`: every support point with index 0 on the axis starts
+  // one, of length D − (sum of its other indices) + 1.
+  auto for_each_line = [&](std::size_t axis, auto&& f) {
+    for (std::size_t s = 0; s < support.flat.size(); ++s) {
+      const auto& e = support.exponents[s];
+      if (e[axis] != 0) continue;
+      std::int32_t others = 0;
+      for (std::int32_t x : e) others += x;
+      f(support.flat[s], static_cast<std::size_t>(degree - others) + 1);
+    }
+  };
+
+  std::vector<mp_limb_t> line(points), next(points);
+  for (std::size_t axis = k; axis-- > 0;) {
+    const auto& x = nodes[axis];
+    const std::size_t st = stride[axis];
+    // Divided differences, in place: level l turns c_i into f[x_{i−l}, …, x_i].
+    for_each_line(axis, [&](std::size_t base, std::size_t n) {
+      for (std::size_t i = 0; i < n; ++i) line[i] = values[base + i * st];
+      for (std::size_t l = 1; l < n; ++l) {
+        for (std::size_t i = n - 1; i >= l; --i) {
+          const mp_limb_t difference = nmod_sub(line[i], line[i - 1], mod);
+          line[i] = nmod_mul(difference, n_invmod(nmod_sub(x[i], x[i - l], mod), p), mod);
+        }
+      }
+      for (std::size_t i = 0; i < n; ++i) values[base + i * st] = line[i];
+    });
+    options.budget.check("determinant interpolation");
+  }
+  for (std::size_t axis = 0; axis < k; ++axis) {
+    const auto& x = nodes[axis];
+    const std::size_t st = stride[axis];
+    // Newton to monomial by Horner: q ← q·(x − x_j) + c_j for j = n−2, …, 0.
+    for_each_line(axis, [&](std::size_t base, std::size_t n) {
+      std::fill(line.begin(), line.begin() + static_cast<std::ptrdiff_t>(n), 0);
+      line[0] = values[base + (n - 1) * st];
+      for (std::size_t j = n - 1; j-- > 0;) {
+        const std::size_t length = n - 1 - j;  // current degree + 1
+        next[0] = 0;
+        for (std::size_t t = 0; t <= length; ++t) {
+          const mp_limb_t shifted = t > 0 ? line[t - 1] : 0;
+          const mp_limb_t kept = t < length ? nmod_mul(line[t], x[j], mod) : 0;
+          next[t] = nmod_sub(shifted, kept, mod);
+        }
+        next[0] = nmod_add(next[0], values[base + j * st], mod);
+        std::copy(next.begin(), next.begin() + static_cast<std::ptrdiff_t>(length + 1), line.begin());
+      }
+      for (std::size_t i = 0; i < n; ++i) values[base + i * st] = line[i];
+    });
+  }
+
+  // One check point off the lattice: the interpolant agrees with the determinant
+  // there unless the degree bound was wrong (the lattice alone cannot tell).
+  for (auto& v : u) v = stream.next(p);
+  std::vector<mp_limb_t> image(support.flat.size());
+  for (std::size_t s = 0; s < image.size(); ++s) image[s] = values[support.flat[s]];
+  if (const auto check = modular.evaluate(u.data())) {
+    ++evaluations;
+    std::vector<std::vector<mp_limb_t>> powers(k, std::vector<mp_limb_t>(points, 1));
+    for (std::size_t v = 0; v < k; ++v) {
+      for (std::size_t e = 1; e < points; ++e) powers[v][e] = nmod_mul(powers[v][e - 1], u[v], mod);
+    }
+    mp_limb_t sum = 0;
+    for (std::size_t s = 0; s < image.size(); ++s) {
+      mp_limb_t term = image[s];
+      for (std::size_t v = 0; v < k; ++v) {
+        term = nmod_mul(term, powers[v][static_cast<std::size_t>(support.exponents[s][v])], mod);
+      }
+      sum = nmod_add(sum, term, mod);
+    }
+    if (sum != *check) throw std::logic_error("pencil_determinant: the determinant exceeds its degree bound");
+  }
+  return image;
+}
+
+// The least prime residues modulo their product: fmpz values in symmetric range.
+class CrtAccumulator {
+ public:
+  explicit CrtAccumulator(std::size_t count) : values_(count) {
+    for (auto& v : values_) fmpz_init(&v);
+    fmpz_init_set_ui(modulus_, 1);
+    fmpz_init(scratch_);
+  }
+  ~CrtAccumulator() {
+    for (auto& v : values_) fmpz_clear(&v);
+    fmpz_clear(modulus_);
+    fmpz_clear(scratch_);
+  }
+  CrtAccumulator(const CrtAccumulator&) = delete;
+  CrtAccumulator& operator=(const CrtAccumulator&) = delete;
+
+  // Adds the residues modulo p; returns whether any value changed.
+  bool add(const std::vector<mp_limb_t>& residues, mp_limb_t p) {
+    bool changed = false;
+    for (std::size_t i = 0; i < values_.size(); ++i) {
+      fmpz_CRT_ui(scratch_, &values_[i], modulus_, residues[i], p, /*sign=*/1);
+      if (!fmpz_equal(scratch_, &values_[i])) {
+        changed = true;
+        fmpz_swap(scratch_, &values_[i]);
+      }
+    }
+    fmpz_mul_ui(modulus_, modulus_, p);
+    return changed;
+  }
+  std::size_t modulus_bits() const { return fmpz_bits(modulus_); }
+  const fmpz* value(std::size_t i) const { return &values_[i]; }
+
+ private:
+  std::vector<fmpz> values_;
+  fmpz_t modulus_;
+  fmpz_t scratch_;
+};
+
+}  // namespace
+
+Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, const PencilDeterminantOptions& options,
+                              PencilDeterminantStats* stats_out) {
+  const std::size_t k = pencil.num_variables();
+  if (ring->num_variables() != k) throw std::invalid_argument("pencil_determinant: ring and pencil differ in variables");
+  if (options.degree_bound < 0) throw std::invalid_argument("pencil_determinant: negative degree bound");
+  for (std::size_t i = 0; i < options.divisor_minor.size(); ++i) {
+    if (options.divisor_minor[i] >= pencil.size() || (i > 0 && options.divisor_minor[i] <= options.divisor_minor[i - 1])) {
+      throw std::invalid_argument("pencil_determinant: the divisor minor's indices must increase within the matrix");
+    }
+  }
+  PencilDeterminantStats stats;
+  if (pencil.size() == 0) {
+    if (stats_out) *stats_out = stats;
+    return Polynomial::constant(ring, Rational(1));
+  }
+
+  const std::size_t points = static_cast<std::size_t>(options.degree_bound) + 1;
+  const DenseSupport support = support_of(k, points, options.degree_bound);
+  CrtAccumulator crt(support.flat.size());
+  PrimeSequence primes = options.primes;
+  const unsigned threads =
+      std::max(1u, options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency()));
+
+  std::size_t stable = 0;
+  bool done = false;
+  while (!done) {
+    // One batch: a prime per thread, run concurrently; the images are combined in
+    // prime order so that the result does not depend on scheduling.
+    std::vector<mp_limb_t> batch(threads);
+    for (auto& p : batch) p = primes.next();
+    std::vector<std::optional<std::vector<mp_limb_t>>> images(threads);
+    std::vector<std::size_t> evaluations(threads, 0);
+    std::vector<std::exception_ptr> errors(threads);
+    auto work = [&](std::size_t i) {
+      try {
+        images[i] = image_modulo(pencil, options, support, batch[i], options.seed, evaluations[i]);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    };
+    std::vector<std::thread> pool;
+    for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(work, i);
+    work(0);
+    for (auto& t : pool) t.join();
+    for (const auto& e : errors) {
+      if (e) std::rethrow_exception(e);
+    }
+
+    for (std::size_t i = 0; i < threads && !done; ++i) {
+      stats.evaluations += evaluations[i];
+      if (!images[i]) {
+        ++stats.unlucky_primes;
+        continue;
+      }
+      const bool changed = crt.add(*images[i], batch[i]);
+      ++stats.primes;
+      stats.modulus_bits = crt.modulus_bits();
+      if (options.proven_bits > 0) {
+        done = stats.modulus_bits > options.proven_bits + 1;
+        stats.proven = done;
+      } else {
+        stable = changed ? 0 : stable + 1;
+        done = stable >= options.stable_primes;
+      }
+    }
+    if (!done && stats.primes + stats.unlucky_primes >= options.max_primes) {
+      throw LimitExceeded(Limit::size, "determinant: more than " + std::to_string(options.max_primes) +
+                                           " primes needed (coefficients too large)");
+    }
+  }
+
+  std::vector<Integer> coefficients;
+  std::vector<std::int32_t> monomials;
+  const std::size_t w = ring->monomial_size();
+  std::vector<std::int32_t> encoded(w);
+  for (std::size_t s = 0; s < support.flat.size(); ++s) {
+    const fmpz* c = crt.value(s);
+    if (fmpz_is_zero(c)) continue;
+    Integer value;
+    fmpz_get_mpz(value.get_mpz_t(), c);
+    coefficients.push_back(std::move(value));
+    ring->encode(support.exponents[s].data(), encoded.data());
+    monomials.insert(monomials.end(), encoded.begin(), encoded.end());
+  }
+  if (stats_out) *stats_out = stats;
+  return Polynomial::from_terms(ring, Rational(1), std::move(coefficients), std::move(monomials));
+}
+
+PencilProbe probe_pencil_determinant(const MatrixPencil& pencil, const std::vector<std::size_t>& divisor_minor,
+                                     std::uint64_t seed, int trials) {
+  if (pencil.size() == 0) return PencilProbe::nonzero;
+  PrimeSequence primes(/*skip=*/7);
+  ResidueStream stream(seed);
+  bool minor_always_zero = true;
+  for (int trial = 0; trial < trials; ++trial) {
+    const mp_limb_t p = primes.next();
+    ModularPencil modular(pencil, divisor_minor, p);
+    std::vector<mp_limb_t> u(pencil.num_variables());
+    for (auto& v : u) v = stream.next(p);
+    const auto value = modular.evaluate(u.data());
+    if (!value) continue;
+    minor_always_zero = false;
+    if (*value != 0) return PencilProbe::nonzero;
+  }
+  return minor_always_zero && !divisor_minor.empty() ? PencilProbe::minor_zero : PencilProbe::zero;
+}
+
+}  // namespace implicitizer
