@@ -1,0 +1,117 @@
+#include "implicitizer/resultant/auxiliary_resultant.hpp"
+
+#include <chrono>
+#include <optional>
+#include <stdexcept>
+
+#include "implicitizer/resultant/dixon.hpp"
+#include "implicitizer/resultant/macaulay.hpp"
+
+namespace implicitizer {
+
+const char* to_string(AuxiliaryFormulation formulation) {
+  switch (formulation) {
+    case AuxiliaryFormulation::dixon:
+      return "dixon";
+    case AuxiliaryFormulation::macaulay:
+      return "macaulay";
+  }
+  return "?";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// ω, ξ, η, ζ scaled by one common integer so that every coefficient is an integer
+// (the resultant only changes by a constant factor).
+std::array<Polynomial, 4> integral(const std::array<Polynomial, 4>& wxyz) {
+  Integer denominator = 1;
+  for (const auto& p : wxyz) {
+    const mpq_class c = to_mpq(p.content());
+    if (!p.is_zero()) mpz_lcm(denominator.get_mpz_t(), denominator.get_mpz_t(), c.get_den().get_mpz_t());
+  }
+  std::array<Polynomial, 4> out = wxyz;
+  for (auto& p : out) p = p.scaled(to_rational(denominator));
+  return out;
+}
+
+// A candidate formulation: its pencil, minor and degree bound.
+struct Candidate {
+  AuxiliaryFormulation formulation;
+  MatrixPencil matrix;
+  std::vector<std::size_t> minor;
+  std::int32_t degree_bound;
+};
+
+}  // namespace
+
+AuxiliaryResultant auxiliary_resultant(const std::array<Polynomial, 4>& input, const RingPtr& space,
+                                       const AuxiliaryResultantOptions& options) {
+  const auto start = Clock::now();
+  if (space->num_variables() != 3) throw std::invalid_argument("auxiliary_resultant: the space ring needs x, y, z");
+  const std::array<Polynomial, 4> wxyz = integral(input);
+  AuxiliaryResultant result{Polynomial(space), {}};
+  auto& stats = result.stats;
+  for (const auto& p : wxyz) {
+    if (p.ring()->num_variables() != 2) throw std::invalid_argument("auxiliary_resultant: two parameters expected");
+    stats.bidegree_s = std::max(stats.bidegree_s, p.degree_in(0));
+    stats.bidegree_t = std::max(stats.bidegree_t, p.degree_in(1));
+    stats.total_degree = std::max(stats.total_degree, p.total_degree());
+  }
+  const std::int32_t m = stats.bidegree_s, n = stats.bidegree_t, d = stats.total_degree;
+
+  // Both formulations, the smaller degree bound first. A parametrization that does
+  // not involve both parameters has m = 0 or n = 0: its image is not a surface and
+  // both resultants vanish, which the caller reports.
+  std::vector<Candidate> candidates;
+  if (m >= 1 && n >= 1) {
+    candidates.push_back({AuxiliaryFormulation::dixon, dixon_pencil(wxyz, m, n), {}, 2 * m * n});
+    MacaulayPencil macaulay = macaulay_pencil(wxyz, d);
+    candidates.push_back({AuxiliaryFormulation::macaulay, std::move(macaulay.matrix), std::move(macaulay.extraneous),
+                          d * d});
+    if (candidates[1].degree_bound < candidates[0].degree_bound) std::swap(candidates[0], candidates[1]);
+  }
+  // Every formulation is probed, even after one is found usable: which of P¹×P¹ and
+  // P² carry base points is worth reporting, and a probe costs one determinant.
+  std::optional<std::size_t> chosen;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    options.budget.check("auxiliary resultant");
+    const PencilProbe probe = probe_pencil_determinant(candidates[i].matrix, candidates[i].minor);
+    if (probe == PencilProbe::nonzero) {
+      if (!chosen) chosen = i;
+    } else if (candidates[i].formulation == AuxiliaryFormulation::dixon) {
+      stats.dixon_vanishes = true;
+    } else {
+      // Zero, or Macaulay's extraneous minor vanishing identically: either way this
+      // formulation cannot give the resultant.
+      stats.macaulay_vanishes = true;
+    }
+  }
+  if (candidates.empty()) stats.dixon_vanishes = stats.macaulay_vanishes = true;
+  stats.construction_ms = ms_since(start);
+  if (!chosen) return result;
+
+  const Candidate& c = candidates[*chosen];
+  stats.formulation = c.formulation;
+  stats.matrix_size = c.matrix.size();
+  stats.extraneous_size = c.minor.size();
+  stats.degree_bound = c.degree_bound;
+  PencilDeterminantOptions determinant;
+  determinant.degree_bound = c.degree_bound;
+  determinant.divisor_minor = c.minor;
+  if (c.minor.empty()) determinant.proven_bits = c.matrix.determinant_coefficient_bits();
+  determinant.threads = options.threads;
+  determinant.stable_primes = options.stable_primes;
+  determinant.budget = options.budget;
+  const auto determinant_start = Clock::now();
+  result.resultant = pencil_determinant(c.matrix, space, determinant, &stats.determinant);
+  stats.determinant_ms = ms_since(determinant_start);
+  return result;
+}
+
+}  // namespace implicitizer
