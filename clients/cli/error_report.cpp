@@ -31,7 +31,8 @@ void report_input_error(const ErrorReport& report, const InputError& e) {
 
 void report_no_single_equation(const ErrorReport& report, const NoSingleEquation& e) {
   if (report.json) std::cout << encode_error(e) << '\n';
-  std::cerr << "error: no_single_equation: " << e.what() << '\n';
+  std::cerr << "error: " << e.code() << ": " << e.what() << '\n';
+  if (e.code() != "no_single_equation") return;  // base_points: no ideal was computed
   if (e.generators().empty()) {
     std::cerr << "the elimination ideal is zero\n";
   } else {

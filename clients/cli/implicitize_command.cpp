@@ -31,9 +31,9 @@ void check_method(const std::string& method, bool json) {
   try {
     (void)parse_implicitization_method(method);
   } catch (const InputError& e) {
-    const bool later = method == "resultant" || method == "interpolation";
+    const bool later = method == "interpolation";
     const std::string message =
-        later ? "method '" + method + "' is not built yet (available: auto, groebner)"
+        later ? "method '" + method + "' is not built yet (available: auto, groebner, resultant)"
               : "unknown method '" + method + "' (expected auto, groebner, resultant or interpolation)";
     if (json) std::cout << encode_error(InputError(e.code(), message).in_field("method")) << '\n';
     throw UsageError(message);

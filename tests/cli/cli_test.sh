@@ -96,7 +96,6 @@ expect_status "missing --z" 2 "missing --z" implicitize --x s --y t
 expect_status "bad timeout" 2 "timeout" implicitize --x s+t --y s --z t --timeout abc
 expect_status "zero timeout" 2 "timeout" implicitize --x s+t --y s --z t --timeout 0
 expect_status "negative timeout" 2 "timeout" implicitize --x s+t --y s --z t --timeout -1
-expect_status "resultant not built" 2 "not built yet" implicitize --x s+t --y s --z t --method resultant
 expect_status "interpolation not built" 2 "not built yet" implicitize --x s+t --y s --z t --method interpolation
 expect_status "unknown method" 2 "unknown method" implicitize --x s+t --y s --z t --method magic
 expect_status "bad strategy" 2 "strategy" implicitize --x s+t --y s --z t --strategy fast
@@ -123,7 +122,7 @@ fi
 # ---- implicitize --json ----
 expect_json "implicitize JSON shape" 0 "
 j['implicit'] == 'x-y-z' and j['degree'] == 1 and j['variables'] == ['x','y','z']
-and j['method'] == 'groebner' and j['verified'] is True and isinstance(j['elapsed_ms'], (int, float))
+and j['method'] == 'resultant' and j['verified'] is True and isinstance(j['elapsed_ms'], (int, float))
 and all(k in j['stats'] for k in ['pairs','product_criterion','chain_criterion','reductions',
   'zero_reductions','reduction_steps','max_degree','basis_size','verify_ms'])
 and 'eliminate' in j['reproduce']['singular'] and 'eliminate' in j['reproduce']['macaulay2']" \
@@ -135,7 +134,26 @@ expect_json "no single equation JSON" 4 "
 j['error']['code'] == 'no_single_equation' and 'x^2-y' in j['error']['generators']" \
   implicitize --x t --y "t^2" --z "t^3" --json
 expect_json "unknown method JSON" 2 "j['error']['code'] == 'unknown_method' and j['error']['field'] == 'method'" \
-  implicitize --x s+t --y s --z t --method resultant --json
+  implicitize --x s+t --y s --z t --method interpolation --json
+
+# ---- implicitize: the resultant route and auto ----
+expect "resultant plane" 0 "x-y-z" implicitize --x s+t --y s --z t --method resultant
+expect "groebner plane" 0 "x-y-z" implicitize --x s+t --y s --z t --method groebner
+expect_json "resultant JSON stats" 0 "
+j['method'] == 'resultant' and j['verified'] is True and j['stats']['resultant']['formulation'] == 'dixon'
+and j['stats']['resultant']['matrix_size'] == 2 and j['stats']['resultant']['proven_bound'] is True" \
+  implicitize --x "s*t" --y s --z t --method resultant --json
+expect_status "base points refused" 4 "base points" implicitize --x "s*t" --y t --z "s^2" --method resultant
+expect_json "base points JSON" 4 "j['error']['code'] == 'base_points'" \
+  implicitize --x "2*s/(1+s^2+t^2)" --y "2*t/(1+s^2+t^2)" --z "(s^2+t^2-1)/(1+s^2+t^2)" --method resultant --json
+expect_json "auto falls back on base points" 0 "
+j['method'] == 'groebner' and j['implicit'] == 'y^2*z-x^2' and j['stats']['resultant']['dixon_vanishes'] is True" \
+  implicitize --x "s*t" --y t --z "s^2" --json
+expect_status "resultant needs two parameters" 3 "method_not_applicable" implicitize --x s --y t --z u --method resultant
+if [[ -n $HARD ]]; then
+  expect_json "auto takes the resultant on tp_22" 0 "j['method'] == 'resultant' and j['degree'] == 8" \
+    implicitize --x "$HX" --y "$HY" --z "$HZ" --json
+fi
 
 # ---- groebner ----
 expect "lex basis" 0 $'y^4+y\nx-y^2' groebner --order lex x^2+y y^2-x

@@ -147,13 +147,20 @@ TEST(AnswerImplicitizeRequest, EncodesTheContractShape) {
   r.y = "s";
   r.z = "t";
   const std::string json = encode_implicitize_response(answer_implicitize_request(r));
-  EXPECT_EQ(json.rfind(R"({"implicit":"x-y-z","degree":1,"variables":["x","y","z"],"method":"groebner",)"
+  EXPECT_EQ(json.rfind(R"({"implicit":"x-y-z","degree":1,"variables":["x","y","z"],"method":"resultant",)"
                        R"("verified":true,"elapsed_ms":)",
                        0),
             0u)
       << json;
+  EXPECT_NE(json.find(R"("resultant":{"dixon_vanishes":true,"macaulay_vanishes":false,"formulation":"macaulay",)"),
+            std::string::npos)
+      << json;
   EXPECT_NE(json.find(R"("reproduce":{"singular":")"), std::string::npos);
-  r.method = "resultant";
+  r.method = "groebner";
+  const std::string groebner = encode_implicitize_response(answer_implicitize_request(r));
+  EXPECT_NE(groebner.find(R"("method":"groebner")"), std::string::npos);
+  EXPECT_EQ(groebner.find(R"("resultant":{)"), std::string::npos) << "Gröbner was forced: no probe";
+  r.method = "interpolation";
   const InputError method = input_error_of([&] { answer_implicitize_request(r); });
   EXPECT_EQ(method.code(), "unknown_method");
   EXPECT_EQ(method.field(), "method");

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cctype>
 #include <ostream>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -122,6 +123,80 @@ TEST_P(ImplicitizeOracle, EquationMatchesSingularAndExpected) {
 }
 
 INSTANTIATE_TEST_SUITE_P(PublicSurfaces, ImplicitizeOracle, ::testing::ValuesIn(public_surfaces()),
+                         [](const auto& test) { return test.param.name; });
+
+// The hard surfaces Singular finishes within seconds, and seeded random tensor-product
+// and triangular patches (polynomial and rational) small enough for it.
+std::vector<testing::Surface> resultant_surfaces() {
+  std::vector<testing::Surface> out;
+  for (const auto& s : testing::read_surfaces(kBench + "/surfaces_hard.json")) {
+    if (s.name == "tri_quadratic" || s.name == "tp_11_rational" || s.name == "tp_21" || s.name == "tp_22") {
+      out.push_back(s);
+    }
+  }
+  std::mt19937_64 rng(44);
+  std::uniform_int_distribution<int> c(-4, 4);
+  auto random_polynomial = [&](int m, int n, bool tensor, int constant) {
+    std::string p = std::to_string(constant);
+    for (int i = 0; i <= m; ++i) {
+      for (int j = 0; j <= n; ++j) {
+        if (!tensor && i + j > n) continue;
+        const int a = c(rng);
+        p += "+(" + std::to_string(a == 0 ? 1 : a) + ")*s^" + std::to_string(i) + "*t^" + std::to_string(j);
+      }
+    }
+    return p;
+  };
+  struct Shape {
+    const char* name;
+    int m, n;
+    bool tensor, rational;
+  };
+  const Shape shapes[] = {{"random_tp_11", 1, 1, true, false},     {"random_tp_11_rational", 1, 1, true, true},
+                          {"random_tp_21", 2, 1, true, false},     {"random_tp_12", 1, 2, true, false},
+                          {"random_tri_2", 2, 2, false, false},    {"random_tri_1_rational", 1, 1, false, true}};
+  for (const Shape& shape : shapes) {
+    testing::Surface s;
+    s.name = shape.name;
+    std::string p[3];
+    for (auto& q : p) q = random_polynomial(shape.m, shape.n, shape.tensor, 0);
+    if (shape.rational) {
+      const std::string w = random_polynomial(shape.m, shape.n, shape.tensor, 30);
+      for (auto& q : p) q = "(" + q + ")/(" + w + ")";
+    }
+    s.x = p[0];
+    s.y = p[1];
+    s.z = p[2];
+    s.degree = shape.tensor ? 2 * shape.m * shape.n : shape.n * shape.n;
+    out.push_back(s);
+  }
+  return out;
+}
+
+class ResultantOracle : public ::testing::TestWithParam<testing::Surface> {};
+
+TEST_P(ResultantOracle, ResultantRouteMatchesSingularsEliminate) {
+  const testing::Surface& s = GetParam();
+  SCOPED_TRACE(s.name + ": x = " + s.x + ", y = " + s.y + ", z = " + s.z);
+  const Parametrization parametrization = parse_parametrization(s.x, s.y, s.z);
+  ImplicitizeOptions options;
+  options.method = ImplicitizationMethod::resultant;
+  const ImplicitizeResult ours = implicitize(parametrization, options);
+  EXPECT_EQ(ours.method, "resultant");
+  EXPECT_TRUE(ours.verified);
+  EXPECT_EQ(ours.degree, s.degree);
+  if (!testing::is_runnable(testing::kSingular)) {
+    GTEST_SKIP() << "Singular not found (SINGULAR_EXECUTABLE=\"" << testing::kSingular << "\")";
+  }
+  const testing::ScriptRun run =
+      testing::run_singular(singular_elimination_script(s, parametrization.parameter_ring->variables()));
+  ASSERT_EQ(run.exit_code, 0) << run.describe();
+  auto sections = testing::split_sections(run.out);
+  ASSERT_EQ(sections["begin"].size(), 1u) << "not one generator:\n" << run.describe();
+  EXPECT_TRUE(testing::equal_up_to_scalar(ours.implicit, parse_polynomial(sections["begin"][0], space_ring())));
+}
+
+INSTANTIATE_TEST_SUITE_P(Patches, ResultantOracle, ::testing::ValuesIn(resultant_surfaces()),
                          [](const auto& test) { return test.param.name; });
 
 }  // namespace

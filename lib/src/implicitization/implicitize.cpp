@@ -20,8 +20,10 @@ RingPtr space_ring() {
 ImplicitizationMethod parse_implicitization_method(const std::string& name) {
   if (name == "auto") return ImplicitizationMethod::automatic;
   if (name == "groebner") return ImplicitizationMethod::groebner;
-  if (name == "resultant" || name == "interpolation") {
-    throw InputError("unknown_method", "method '" + name + "' is not available in this version (use auto or groebner)");
+  if (name == "resultant") return ImplicitizationMethod::resultant;
+  if (name == "interpolation") {
+    throw InputError("unknown_method",
+                     "method 'interpolation' is not available in this version (use auto, groebner or resultant)");
   }
   throw InputError("unknown_method", "unknown method '" + name + "' (expected auto, groebner, resultant or interpolation)");
 }
@@ -35,10 +37,8 @@ std::string fresh_name(const Ring& params) {
   return name;
 }
 
-}  // namespace
-
-ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+// The generator of the elimination ideal (Theorem 1.9 with the lcm).
+ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeOptions& options) {
   const Ring& params = *p.parameter_ring;
   const std::size_t k = params.num_variables();
 
@@ -90,21 +90,108 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
   ImplicitizeResult result;
   const std::size_t identity[3] = {0, 1, 2};
   result.implicit = gens.front().map_to(space_ring(), identity).primitive_part();
-  result.degree = result.implicit.total_degree();
   result.method = "groebner";
   result.stats = elimination.groebner.stats;
+  return result;
+}
 
-  const auto verify_start = std::chrono::steady_clock::now();
-  result.verified = substitutes_to_zero(result.implicit, p, options.groebner.budget);
+using Clock = std::chrono::steady_clock;
+
+// Verifies `result.implicit` by substitution (unless the route did) and fills the
+// fields every route shares.
+void finish(ImplicitizeResult& result, const Parametrization& p, const Budget& budget, Clock::time_point start) {
+  result.degree = result.implicit.total_degree();
   if (!result.verified) {
-    throw std::logic_error("internal error: the implicit equation " + to_string(result.implicit) +
-                           " does not vanish on the parametrization");
+    const auto verify_start = Clock::now();
+    result.verified = substitutes_to_zero(result.implicit, p, budget);
+    result.verify_ms = std::chrono::duration<double, std::milli>(Clock::now() - verify_start).count();
+    if (!result.verified) {
+      throw std::logic_error("internal error: the implicit equation " + to_string(result.implicit) +
+                             " does not vanish on the parametrization");
+    }
   }
-  const auto end = std::chrono::steady_clock::now();
-  result.verify_ms = std::chrono::duration<double, std::milli>(end - verify_start).count();
   result.singular_script = singular_script(p);
   result.macaulay2_script = macaulay2_script(p);
-  result.elapsed_ms = std::chrono::duration<double, std::milli>(end - start).count();
+  result.elapsed_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Theorem 1.13: Res_aux = c·f^l, so f is the square-free part, taken with respect to
+// a variable Res_aux involves. Returns nullopt (with the probe's stats in `stats`)
+// when Res_aux vanishes identically.
+std::optional<ImplicitizeResult> by_resultant(const Parametrization& p, const Budget& budget,
+                                              std::optional<AuxiliaryResultantStats>& stats) {
+  // ω = L (the lcm of the denominators), ξ_i = p_i·(L / q_i).
+  Polynomial l = Polynomial::constant(p.parameter_ring, Rational(1));
+  for (const auto& c : p.coordinates) l = lcm(l, c.denominator());
+  std::array<Polynomial, 4> wxyz = {l, l, l, l};
+  for (std::size_t v = 0; v < 3; ++v) {
+    const auto& c = p.coordinates[v];
+    wxyz[v + 1] = c.numerator() * divide_exact(l, c.denominator());
+  }
+  // Macaulay's quotient stops at the first prime that confirms the previous ones;
+  // if the answer then fails Theorem 1.12 or the substitution, it is recomputed
+  // with more confirming primes before anything is called a bug.
+  for (std::size_t stable_primes : {std::size_t{1}, std::size_t{4}}) {
+    AuxiliaryResultantOptions options;
+    options.budget = budget;
+    options.stable_primes = stable_primes;
+    const AuxiliaryResultant aux = auxiliary_resultant(wxyz, space_ring(), options);
+    stats = aux.stats;
+    if (aux.resultant.is_zero()) return std::nullopt;
+    const Polynomial& r = aux.resultant;
+    if (r.is_constant()) {
+      throw NoSingleEquation("no implicit equation: the auxiliary resultant is a non-zero constant", {});
+    }
+    std::size_t var = 0;
+    while (!r.involves(var)) ++var;
+    ImplicitizeResult result;
+    result.implicit = square_free_part(r, var);
+    result.method = "resultant";
+    result.resultant_stats = aux.stats;
+    result.map_degree = r.total_degree() / result.implicit.total_degree();
+    // Theorem 1.12: Res_aux is exactly c·f^l.
+    const bool is_power =
+        result.implicit.pow(static_cast<unsigned>(result.map_degree), budget).primitive_part() == r.primitive_part();
+    const auto verify_start = Clock::now();
+    result.verified = is_power && substitutes_to_zero(result.implicit, p, budget);
+    result.verify_ms = std::chrono::duration<double, std::milli>(Clock::now() - verify_start).count();
+    if (result.verified) return result;
+    if (aux.stats.determinant.proven) break;  // exact by construction: retrying cannot help
+  }
+  throw std::logic_error("internal error: the auxiliary resultant does not give the implicit equation");
+}
+
+}  // namespace
+
+ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions& options) {
+  const auto start = Clock::now();
+  const Budget& budget = options.groebner.budget;
+  const bool two_parameters = p.parameter_ring->num_variables() == 2;
+  std::optional<AuxiliaryResultantStats> probe;
+  if (options.method == ImplicitizationMethod::resultant) {
+    if (!two_parameters) {
+      throw InputError("method_not_applicable", "the resultant method needs exactly two parameters (this has " +
+                                                    std::to_string(p.parameter_ring->num_variables()) + ")");
+    }
+    auto result = by_resultant(p, budget, probe);
+    if (!result) {
+      throw NoSingleEquation(
+          "the auxiliary resultant vanishes identically: the parametrization has base points (Theorem 1.14), "
+          "both as a tensor-product patch on P1xP1 and as a triangular patch on P2; use method groebner or auto",
+          {}, "base_points");
+    }
+    finish(*result, p, budget, start);
+    return *result;
+  }
+  if (options.method == ImplicitizationMethod::automatic && two_parameters) {
+    if (auto result = by_resultant(p, budget, probe)) {
+      finish(*result, p, budget, start);
+      return *result;
+    }
+  }
+  ImplicitizeResult result = by_groebner(p, options);
+  result.resultant_stats = probe;
+  finish(result, p, budget, start);
   return result;
 }
 

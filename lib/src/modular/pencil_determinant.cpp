@@ -323,6 +323,9 @@ Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, c
 
   const std::size_t points = static_cast<std::size_t>(options.degree_bound) + 1;
   const DenseSupport support = support_of(k, points, options.degree_bound);
+  // The answer has at most one term per monomial of the lattice: the size limit
+  // applies before any work.
+  options.budget.check_terms(support.flat.size(), "determinant");
   CrtAccumulator crt(support.flat.size());
   PrimeSequence primes = options.primes;
   const unsigned threads =

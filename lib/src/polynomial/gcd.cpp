@@ -95,6 +95,11 @@ Polynomial lcm(const Polynomial& a, const Polynomial& b) {
   return divide_exact(a.primitive_part() * b.primitive_part(), gcd(a, b)).primitive_part();
 }
 
+Polynomial square_free_part(const Polynomial& a, std::size_t var) {
+  if (a.is_zero() || !a.involves(var)) return a.primitive_part();
+  return divide_exact(a, gcd(a, a.derivative(var))).primitive_part();
+}
+
 Polynomial divide_exact(const Polynomial& a, const Polynomial& b) {
   if (b.is_zero()) throw std::logic_error("divide_exact by zero");
   if (a.is_zero()) return a;

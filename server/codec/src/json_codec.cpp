@@ -191,6 +191,43 @@ void write_stats_members(Writer& w, const BuchbergerStats& s) {
   write_milliseconds(w, s.elapsed_ms);
 }
 
+// The auxiliary resultant's statistics: what the resultant route did, or, when
+// `auto` fell back to Gröbner, what its probe found.
+void write_resultant_stats(Writer& w, const AuxiliaryResultantStats& s, std::int32_t map_degree) {
+  w.StartObject();
+  write_key(w, "dixon_vanishes");
+  w.Bool(s.dixon_vanishes);
+  write_key(w, "macaulay_vanishes");
+  w.Bool(s.macaulay_vanishes);
+  if (s.matrix_size > 0) {
+    write_key(w, "formulation");
+    write_string(w, to_string(s.formulation));
+    write_key(w, "matrix_size");
+    w.Uint64(s.matrix_size);
+    write_key(w, "extraneous_size");
+    w.Uint64(s.extraneous_size);
+    write_key(w, "degree_bound");
+    w.Int(s.degree_bound);
+    write_key(w, "map_degree");
+    w.Int(map_degree);
+    write_key(w, "primes");
+    w.Uint64(s.determinant.primes);
+    write_key(w, "unlucky_primes");
+    w.Uint64(s.determinant.unlucky_primes);
+    write_key(w, "evaluations");
+    w.Uint64(s.determinant.evaluations);
+    write_key(w, "modulus_bits");
+    w.Uint64(s.determinant.modulus_bits);
+    write_key(w, "proven_bound");
+    w.Bool(s.determinant.proven);
+    write_key(w, "determinant_ms");
+    write_milliseconds(w, s.determinant_ms);
+  }
+  write_key(w, "construction_ms");
+  write_milliseconds(w, s.construction_ms);
+  w.EndObject();
+}
+
 std::string finish(const rapidjson::StringBuffer& buffer) { return std::string(buffer.GetString(), buffer.GetSize()); }
 
 }  // namespace
@@ -247,6 +284,10 @@ std::string encode_implicitize_response(const ImplicitizeResult& result) {
   write_stats_members(w, result.stats);
   write_key(w, "verify_ms");
   write_milliseconds(w, result.verify_ms);
+  if (result.resultant_stats) {
+    write_key(w, "resultant");
+    write_resultant_stats(w, *result.resultant_stats, result.map_degree);
+  }
   w.EndObject();
   write_key(w, "reproduce");
   w.StartObject();
@@ -319,7 +360,7 @@ std::string encode_error(const InputError& error) {
 }
 
 std::string encode_error(const NoSingleEquation& error) {
-  return encode_error_object("no_single_equation", error.what(), [&](Writer& w) {
+  return encode_error_object(error.code(), error.what(), [&](Writer& w) {
     write_key(w, "generators");
     w.StartArray();
     for (const std::string& g : error.generators()) write_string(w, g);

@@ -57,18 +57,24 @@ class LimitExceeded : public std::runtime_error {
   Limit limit_;
 };
 
-/// The image of a parametrization is not a surface: no single implicit equation.
-/// `generators` holds the printed generators of the elimination ideal (empty when
-/// the ideal is zero, i.e. the image is dense in space).
+/// No single implicit equation can be given: the image of the parametrization is
+/// not a surface (code `no_single_equation`; `generators` holds the printed
+/// generators of the elimination ideal, empty when the ideal is zero, i.e. the
+/// image is dense in space), or the route asked for does not apply (code
+/// `base_points`: the auxiliary resultant vanishes identically).
 class NoSingleEquation : public std::runtime_error {
  public:
-  NoSingleEquation(const std::string& message, std::vector<std::string> generators)
-      : std::runtime_error(message), generators_(std::move(generators)) {}
+  NoSingleEquation(const std::string& message, std::vector<std::string> generators,
+                   std::string code = "no_single_equation")
+      : std::runtime_error(message), generators_(std::move(generators)), code_(std::move(code)) {}
   /// The generators of the elimination ideal, printed.
   const std::vector<std::string>& generators() const { return generators_; }
+  /// The stable code: `no_single_equation` or `base_points`.
+  const std::string& code() const { return code_; }
 
  private:
   std::vector<std::string> generators_;
+  std::string code_;
 };
 
 }  // namespace implicitizer

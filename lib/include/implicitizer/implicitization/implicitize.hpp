@@ -5,8 +5,11 @@
 
 #include <string>
 
+#include <optional>
+
 #include "implicitizer/groebner/buchberger.hpp"
 #include "implicitizer/implicitization/parametrization.hpp"
+#include "implicitizer/resultant/auxiliary_resultant.hpp"
 
 namespace implicitizer {
 
@@ -15,12 +18,13 @@ RingPtr space_ring();
 
 /// Which route computes the equation.
 enum class ImplicitizationMethod {
-  automatic,  ///< the route that is right and fastest for the input (today: groebner)
+  automatic,  ///< the auxiliary resultant when it applies, else Gröbner (docs/algorithms.md)
   groebner,   ///< elimination with Buchberger's algorithm
+  resultant,  ///< the auxiliary resultant; refused (base_points) when it vanishes
 };
 
-/// Parses `auto` and `groebner`; throws InputError (`unknown_method`) otherwise,
-/// naming the methods of later releases (`resultant`, `interpolation`) as not yet built.
+/// Parses `auto`, `groebner` and `resultant`; throws InputError (`unknown_method`)
+/// otherwise, naming `interpolation` as not yet built.
 ImplicitizationMethod parse_implicitization_method(const std::string& name);
 
 /// Options of implicitize().
@@ -33,17 +37,31 @@ struct ImplicitizeOptions {
 struct ImplicitizeResult {
   Polynomial implicit{space_ring()};  ///< primitive, positive leading coefficient, ring x,y,z grevlex
   std::int32_t degree = 0;         ///< total degree of `implicit`
-  std::string method;              ///< the route used ("groebner")
+  std::string method;              ///< the route used ("groebner" or "resultant")
   bool verified = false;           ///< substitution into `implicit` gave exactly 0
   double elapsed_ms = 0;           ///< wall time of the whole call
   double verify_ms = 0;            ///< of which spent verifying
-  BuchbergerStats stats;           ///< of the elimination
+  BuchbergerStats stats;           ///< of the elimination (Gröbner route)
+  /// Of the auxiliary resultant (resultant route; also set when `auto` probed it and
+  /// fell back to Gröbner, with dixon_vanishes and macaulay_vanishes true).
+  std::optional<AuxiliaryResultantStats> resultant_stats;
+  /// l in Res_aux = c·f^l: the degree of the parametrization as a map onto its
+  /// image (resultant route; 0 when unknown).
+  std::int32_t map_degree = 0;
   std::string singular_script;     ///< recomputes the elimination in Singular
   std::string macaulay2_script;    ///< recomputes the elimination in Macaulay2
 };
 
-/// The generator of the elimination ideal of I = ⟨q_i·X_i − p_i, 1 − L·w⟩ (L the lcm
-/// of the denominators; w only when L is not constant), verified by substitution.
+/// The implicit equation of the image, verified by substitution, by the route of
+/// `options.method`:
+///   - groebner: the generator of the elimination ideal of I = ⟨q_i·X_i − p_i, 1 − L·w⟩
+///     (L the lcm of the denominators; w only when L is not constant);
+///   - resultant: the square-free part gcd-free of the auxiliary resultant
+///     (Theorem 1.13), for two parameters; NoSingleEquation with code `base_points`
+///     when the auxiliary resultant vanishes identically (Theorem 1.14), InputError
+///     `method_not_applicable` for another number of parameters;
+///   - auto: resultant when it applies, else groebner (the rule and the measurements
+///     behind it are in docs/algorithms.md).
 /// Throws NoSingleEquation when the ideal is zero or needs several generators (the
 /// image is a curve, a point, or fills space), LimitExceeded when the budget runs out.
 /// A failed verification throws std::logic_error: it is a bug, never an answer.

@@ -12,6 +12,12 @@ namespace implicitizer {
 Polynomial gcd(const Polynomial& a, const Polynomial& b);
 /// lcm(a, b), primitive with positive leading coefficient; 0 if either is 0.
 Polynomial lcm(const Polynomial& a, const Polynomial& b);
+/// The square-free part of `a` with respect to its variable `var`: a / gcd(a, ∂a/∂var),
+/// primitive with positive leading coefficient. When a = c·f^l with f irreducible and
+/// involving var, this is f (Theorem 1.13 of the seed thesis: f ∤ ∂f/∂var because the
+/// derivative has smaller degree in var).
+Polynomial square_free_part(const Polynomial& a, std::size_t var);
+
 /// a / b when b divides a exactly (over ℚ); throws std::logic_error otherwise.
 Polynomial divide_exact(const Polynomial& a, const Polynomial& b);
 
