@@ -254,6 +254,42 @@ TEST(Implicitize, BasePointsOnlyOnTheProjectivePlaneStillAllowTheResultant) {
   EXPECT_TRUE(r.resultant_stats->macaulay_vanishes);
 }
 
+TEST(Implicitize, PlaneCurvesByBothRoutes) {
+  // Two coordinates in one parameter: the implicit curve f(x, y), by Sylvester's
+  // resultant (auto) and by Buchberger, which must agree.
+  const char* cases[][3] = {
+      {"t^2-1", "t^3-t", "x^3+x^2-y^2"},                        // nodal cubic
+      {"(1-t^2)/(1+t^2)", "2*t/(1+t^2)", "x^2+y^2-1"},          // circle
+      {"3*t/(1+t^3)", "3*t^2/(1+t^3)", "x^3+y^3-3*x*y"},        // folium of Descartes
+      {"t^2", "t^4", "x^2-y"},                                  // covered twice: map degree 2
+      {"t^3/(t^2+1)", "t^5-2*t+7", ""},                         // a rational quintic, checked by agreement
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c[0]);
+    ImplicitizeOptions options;
+    const Parametrization p = parse_parametrization(std::vector<std::string>{c[0], c[1]});
+    const ImplicitizeResult r = implicitize(p, options);
+    EXPECT_EQ(r.method, "resultant");
+    EXPECT_TRUE(r.verified);
+    EXPECT_EQ(r.implicit.ring()->variables(), (std::vector<std::string>{"x", "y"}));
+    if (*c[2]) {
+      EXPECT_EQ(to_string(r.implicit), c[2]);
+    }
+    options.method = ImplicitizationMethod::groebner;
+    EXPECT_EQ(implicitize(p, options).implicit, r.implicit);
+  }
+  EXPECT_EQ(implicitize(parse_parametrization(std::vector<std::string>{"t^2", "t^4"})).map_degree, 2);
+}
+
+TEST(Implicitize, PlaneParametrizationsThatAreNotCurves) {
+  ImplicitizeOptions resultant;
+  resultant.method = ImplicitizationMethod::resultant;
+  EXPECT_THROW(implicitize(parse_parametrization(std::vector<std::string>{"s", "t"})), NoSingleEquation);
+  EXPECT_THROW(implicitize(parse_parametrization(std::vector<std::string>{"s", "t"}), resultant), InputError);
+  EXPECT_THROW(implicitize(parse_parametrization(std::vector<std::string>{"2", "3+0*t"}), resultant), NoSingleEquation);
+  EXPECT_THROW(parse_parametrization(std::vector<std::string>{"t"}), std::invalid_argument);
+}
+
 TEST(Implicitize, ResultantNeedsTwoParameters) {
   try {
     by(ImplicitizationMethod::resultant, "s", "t", "u");

@@ -1,6 +1,7 @@
 #include "implicitizer/implicitization/implicitize.hpp"
 
 #include <chrono>
+#include <span>
 #include <stdexcept>
 
 #include "implicitizer/core/errors.hpp"
@@ -9,11 +10,17 @@
 #include "implicitizer/implicitization/verify.hpp"
 #include "implicitizer/polynomial/gcd.hpp"
 #include "implicitizer/polynomial/printer.hpp"
+#include "implicitizer/resultant/curve_resultant.hpp"
 
 namespace implicitizer {
 
 RingPtr space_ring() {
   static const RingPtr ring = Ring::make({"x", "y", "z"}, MonomialOrder::grevlex());
+  return ring;
+}
+
+RingPtr plane_ring() {
+  static const RingPtr ring = Ring::make({"x", "y"}, MonomialOrder::grevlex());
   return ring;
 }
 
@@ -56,14 +63,15 @@ ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeOptions
   if (saturate) names.push_back(fresh_name(params));
   names.insert(names.end(), params.variables().begin(), params.variables().end());
   eliminated = names;
-  names.insert(names.end(), {"x", "y", "z"});
+  const std::size_t n = p.coordinates.size();
+  for (const auto& v : coordinate_names(n)) names.push_back(v);
   RingPtr ring = Ring::make(names);
   const std::size_t offset = saturate ? 1 : 0;
   std::vector<std::size_t> param_map(k);
   for (std::size_t i = 0; i < k; ++i) param_map[i] = offset + i;
 
   std::vector<Polynomial> generators;
-  for (std::size_t v = 0; v < 3; ++v) {
+  for (std::size_t v = 0; v < n; ++v) {
     const auto& c = p.coordinates[v];
     const Polynomial space_variable = Polynomial::variable(ring, offset + k + v);
     generators.push_back(c.denominator().map_to(ring, param_map) * space_variable - c.numerator().map_to(ring, param_map));
@@ -78,18 +86,20 @@ ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeOptions
   if (gens.size() != 1 || gens.front().is_constant()) {
     std::vector<std::string> printed;
     for (const auto& g : gens) printed.push_back(to_string(g.primitive_part()));
+    const std::string space = n == 3 ? "space" : "the plane";
+    const std::string kind = n == 3 ? "a surface" : "a curve";
     if (gens.empty()) {
-      throw NoSingleEquation("no implicit equation: the image is dense in space (the elimination ideal is zero)",
+      throw NoSingleEquation("no implicit equation: the image is dense in " + space + " (the elimination ideal is zero)",
                              printed);
     }
-    throw NoSingleEquation("no single implicit equation: the image is not a surface (the elimination ideal needs " +
-                               std::to_string(gens.size()) + " generators)",
+    throw NoSingleEquation("no single implicit equation: the image is not " + kind +
+                               " (the elimination ideal needs " + std::to_string(gens.size()) + " generators)",
                            printed);
   }
 
   ImplicitizeResult result;
   const std::size_t identity[3] = {0, 1, 2};
-  result.implicit = gens.front().map_to(space_ring(), identity).primitive_part();
+  result.implicit = gens.front().map_to(implicit_ring(n), std::span(identity, n)).primitive_part();
   result.method = "groebner";
   result.stats = elimination.groebner.stats;
   return result;
@@ -120,14 +130,12 @@ void finish(ImplicitizeResult& result, const Parametrization& p, const Budget& b
 // when Res_aux vanishes identically.
 std::optional<ImplicitizeResult> by_resultant(const Parametrization& p, const Budget& budget,
                                               std::optional<AuxiliaryResultantStats>& stats) {
-  // ω = L (the lcm of the denominators), ξ_i = p_i·(L / q_i).
+  // ω = L (the lcm of the denominators), ξ_v = p_v·(L / q_v).
   Polynomial l = Polynomial::constant(p.parameter_ring, Rational(1));
   for (const auto& c : p.coordinates) l = lcm(l, c.denominator());
-  std::array<Polynomial, 4> wxyz = {l, l, l, l};
-  for (std::size_t v = 0; v < 3; ++v) {
-    const auto& c = p.coordinates[v];
-    wxyz[v + 1] = c.numerator() * divide_exact(l, c.denominator());
-  }
+  std::vector<Polynomial> forms = {l};
+  for (const auto& c : p.coordinates) forms.push_back(c.numerator() * divide_exact(l, c.denominator()));
+  const bool curve = p.coordinates.size() == 2;
   // Macaulay's quotient stops at the first prime that confirms the previous ones;
   // if the answer then fails Theorem 1.12 or the substitution, it is recomputed
   // with more confirming primes before anything is called a bug.
@@ -135,7 +143,9 @@ std::optional<ImplicitizeResult> by_resultant(const Parametrization& p, const Bu
     AuxiliaryResultantOptions options;
     options.budget = budget;
     options.stable_primes = stable_primes;
-    const AuxiliaryResultant aux = auxiliary_resultant(wxyz, space_ring(), options);
+    const AuxiliaryResultant aux =
+        curve ? curve_auxiliary_resultant({forms[0], forms[1], forms[2]}, plane_ring(), options)
+              : auxiliary_resultant({forms[0], forms[1], forms[2], forms[3]}, space_ring(), options);
     stats = aux.stats;
     if (aux.resultant.is_zero()) return std::nullopt;
     const Polynomial& r = aux.resultant;
@@ -166,14 +176,23 @@ std::optional<ImplicitizeResult> by_resultant(const Parametrization& p, const Bu
 ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions& options) {
   const auto start = Clock::now();
   const Budget& budget = options.groebner.budget;
-  const bool two_parameters = p.parameter_ring->num_variables() == 2;
+  // The resultant route eliminates one parameter per coordinate but one: a surface
+  // in two parameters, or a plane curve in one.
+  const std::size_t coordinates = p.coordinates.size();
+  const std::size_t parameters = p.parameter_ring->num_variables();
+  const bool resultant_applies = parameters + 1 == coordinates;
   std::optional<AuxiliaryResultantStats> probe;
   if (options.method == ImplicitizationMethod::resultant) {
-    if (!two_parameters) {
-      throw InputError("method_not_applicable", "the resultant method needs exactly two parameters (this has " +
-                                                    std::to_string(p.parameter_ring->num_variables()) + ")");
+    if (!resultant_applies) {
+      throw InputError("method_not_applicable",
+                       "the resultant method needs " + std::to_string(coordinates - 1) + " parameter" +
+                           (coordinates == 2 ? "" : "s") + " for " + std::to_string(coordinates) +
+                           " coordinates (this has " + std::to_string(parameters) + ")");
     }
     auto result = by_resultant(p, budget, probe);
+    if (!result && coordinates == 2) {
+      throw NoSingleEquation("no implicit curve: the image is a point", {});
+    }
     if (!result) {
       throw NoSingleEquation(
           "the auxiliary resultant vanishes identically: the parametrization has base points (Theorem 1.14), "
@@ -183,7 +202,7 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
     finish(*result, p, budget, start);
     return *result;
   }
-  if (options.method == ImplicitizationMethod::automatic && two_parameters) {
+  if (options.method == ImplicitizationMethod::automatic && resultant_applies) {
     if (auto result = by_resultant(p, budget, probe)) {
       finish(*result, p, budget, start);
       return *result;

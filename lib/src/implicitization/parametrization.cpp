@@ -1,6 +1,7 @@
 #include "implicitizer/implicitization/parametrization.hpp"
 
 #include <set>
+#include <stdexcept>
 
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/polynomial/expression.hpp"
@@ -22,17 +23,32 @@ const Expression* find_identifier(const Expression& e, const std::string& name) 
 
 }  // namespace
 
+std::vector<std::string> coordinate_names(std::size_t count) {
+  std::vector<std::string> names = {"x", "y", "z"};
+  names.resize(count);
+  return names;
+}
+
 Parametrization parse_parametrization(const std::string& x, const std::string& y, const std::string& z,
                                       const std::optional<std::vector<std::string>>& parameters,
                                       const Budget& budget) {
-  const std::array<const std::string*, 3> texts{&x, &y, &z};
-  const std::array<const char*, 3> fields{"x", "y", "z"};
-  std::array<std::unique_ptr<Expression>, 3> trees;
+  return parse_parametrization(std::vector<std::string>{x, y, z}, parameters, budget);
+}
+
+Parametrization parse_parametrization(const std::vector<std::string>& texts,
+                                      const std::optional<std::vector<std::string>>& parameters,
+                                      const Budget& budget) {
+  if (texts.size() != 2 && texts.size() != 3) {
+    throw std::invalid_argument("parse_parametrization: two or three coordinates expected");
+  }
+  const std::size_t count = texts.size();
+  const std::vector<std::string> fields = coordinate_names(count);
+  std::vector<std::unique_ptr<Expression>> trees(count);
   std::vector<std::string> found;
   std::set<std::string> seen;
-  for (std::size_t i = 0; i < 3; ++i) {
+  for (std::size_t i = 0; i < count; ++i) {
     try {
-      trees[i] = parse_expression(*texts[i]);
+      trees[i] = parse_expression(texts[i]);
     } catch (const InputError& e) {
       throw e.in_field(fields[i]);
     }
@@ -64,15 +80,14 @@ Parametrization parse_parametrization(const std::string& x, const std::string& y
     }
   }
   RingPtr ring = Ring::make(names);
-  std::vector<RationalFunction> coordinates;
-  for (std::size_t i = 0; i < 3; ++i) {
+  Parametrization result{ring, {}, texts};
+  for (std::size_t i = 0; i < count; ++i) {
     try {
-      coordinates.push_back(evaluate_rational_function(*trees[i], ring, budget));
+      result.coordinates.push_back(evaluate_rational_function(*trees[i], ring, budget));
     } catch (const InputError& e) {
       throw e.in_field(fields[i]);
     }
   }
-  Parametrization result{ring, {coordinates[0], coordinates[1], coordinates[2]}, {x, y, z}};
   return result;
 }
 

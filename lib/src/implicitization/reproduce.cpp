@@ -51,8 +51,8 @@ ScriptIdeal script_ideal(const Parametrization& p) {
   Polynomial l = Polynomial::constant(p.parameter_ring, Rational(1));
   for (const auto& c : p.coordinates) l = lcm(l, c.denominator());
   ScriptIdeal out;
-  const char* space[3] = {"x", "y", "z"};
-  for (std::size_t v = 0; v < 3; ++v) {
+  const std::vector<std::string> space = coordinate_names(p.coordinates.size());
+  for (std::size_t v = 0; v < space.size(); ++v) {
     const std::string num = to_string(p.coordinates[v].numerator().map_to(ring, same));
     const std::string den = to_string(p.coordinates[v].denominator().map_to(ring, same));
     out.generators.push_back((den == "1" ? std::string() : "(" + den + ")*") + space[v] + "-(" + num + ")");
@@ -72,7 +72,10 @@ std::string join(const std::vector<std::string>& parts, const std::string& separ
 }
 
 std::string comment_of(const Parametrization& p) {
-  return "x = " + p.sources[0] + ", y = " + p.sources[1] + ", z = " + p.sources[2];
+  const std::vector<std::string> space = coordinate_names(p.coordinates.size());
+  std::vector<std::string> parts;
+  for (std::size_t v = 0; v < space.size(); ++v) parts.push_back(space[v] + " = " + p.sources[v]);
+  return join(parts, ", ");
 }
 
 }  // namespace
@@ -80,7 +83,7 @@ std::string comment_of(const Parametrization& p) {
 std::string singular_script(const Parametrization& p) {
   const ScriptIdeal ideal = script_ideal(p);
   std::vector<std::string> vars = ideal.eliminated;
-  vars.insert(vars.end(), {"x", "y", "z"});
+  for (const auto& v : coordinate_names(p.coordinates.size())) vars.push_back(v);
   std::string product = join(ideal.eliminated, "*");
   if (product.empty()) product = "1";
   return "// implicitizer: the implicit equation of " + comment_of(p) +
@@ -103,7 +106,7 @@ std::string singular_script(const Parametrization& p) {
 std::string macaulay2_script(const Parametrization& p) {
   const ScriptIdeal ideal = script_ideal(p);
   std::vector<std::string> vars = ideal.eliminated;
-  vars.insert(vars.end(), {"x", "y", "z"});
+  for (const auto& v : coordinate_names(p.coordinates.size())) vars.push_back(v);
   return "-- implicitizer: the implicit equation of " + comment_of(p) +
          "\n"
          "R = QQ[" +

@@ -4,24 +4,36 @@
 #include <flint/ulong_extras.h>
 
 #include <algorithm>
-#include <array>
+#include <stdexcept>
 
 #include "implicitizer/modular/prime_sequence.hpp"
 #include "implicitizer/polynomial/gcd.hpp"
 
 namespace implicitizer {
 
+namespace {
+
+void check_rings(const Polynomial& implicit, const Parametrization& parametrization) {
+  if (implicit.ring()->num_variables() != parametrization.coordinates.size()) {
+    throw std::invalid_argument("substitutes_to_zero: one variable per coordinate expected");
+  }
+}
+
+}  // namespace
+
 bool substitutes_to_zero_symbolic(const Polynomial& implicit, const Parametrization& parametrization,
                                   const Budget& budget) {
+  check_rings(implicit, parametrization);
   const RingPtr& params = parametrization.parameter_ring;
   const Ring& space = *implicit.ring();
+  const std::size_t n = parametrization.coordinates.size();
   // Clearing denominators: F(p1/q1, p2/q2, p3/q3)·q1^a·q2^b·q3^c is a polynomial, and
   // it vanishes exactly when F vanishes on the image (the q_i are non-zero).
-  std::array<std::int32_t, 3> degree{};
-  for (std::size_t v = 0; v < 3; ++v) degree[v] = std::max(0, implicit.degree_in(v));
+  std::vector<std::int32_t> degree(n);
+  for (std::size_t v = 0; v < n; ++v) degree[v] = std::max(0, implicit.degree_in(v));
   // Power tables: numerator^e and denominator^e for each coordinate.
-  std::array<std::vector<Polynomial>, 3> num_powers, den_powers;
-  for (std::size_t v = 0; v < 3; ++v) {
+  std::vector<std::vector<Polynomial>> num_powers(n), den_powers(n);
+  for (std::size_t v = 0; v < n; ++v) {
     const auto& c = parametrization.coordinates[v];
     num_powers[v].push_back(Polynomial::constant(params, Rational(1)));
     den_powers[v].push_back(Polynomial::constant(params, Rational(1)));
@@ -35,7 +47,7 @@ bool substitutes_to_zero_symbolic(const Polynomial& implicit, const Parametrizat
   for (std::size_t t = 0; t < implicit.num_terms(); ++t) {
     const std::int32_t* e = space.exponents(implicit.monomial(t));
     Polynomial term = Polynomial::constant(params, implicit.coefficient(t));
-    for (std::size_t v = 0; v < 3; ++v) {
+    for (std::size_t v = 0; v < n; ++v) {
       term = term.multiply(num_powers[v][e[v]], budget);
       term = term.multiply(den_powers[v][degree[v] - e[v]], budget);
     }
@@ -51,10 +63,7 @@ namespace {
 // high degree); the surfaces of ../shared/bench need at most 3025 points.
 constexpr double kMaxGridPoints = 4e6;
 
-Integer integer_of(const Rational& q) {
-  const mpq_class v = to_mpq(q);
-  return v.get_num();
-}
+Integer integer_of(const Rational& q) { return to_mpq(q).get_num(); }
 
 // ‖p‖₁ for an integer polynomial.
 Integer norm1(const Polynomial& p) {
@@ -63,9 +72,19 @@ Integer norm1(const Polynomial& p) {
   return sum;
 }
 
-// The values of p modulo `mod` at the point `u` (residues of the parameters).
-mp_limb_t evaluate_mod(const Polynomial& p, const std::vector<std::vector<mp_limb_t>>& powers, nmod_t mod,
-                       const std::vector<mp_limb_t>& residues) {
+// The coefficients of an integer polynomial modulo `prime`.
+std::vector<mp_limb_t> residues_of(const Polynomial& p, mp_limb_t prime) {
+  std::vector<mp_limb_t> out(p.num_terms());
+  for (std::size_t t = 0; t < p.num_terms(); ++t) {
+    const Integer c = integer_of(p.coefficient(t));
+    out[t] = mpz_fdiv_ui(c.get_mpz_t(), prime);
+  }
+  return out;
+}
+
+// p modulo `mod` at the point whose coordinate powers are `powers` (powers[v][e]).
+mp_limb_t evaluate_mod(const Polynomial& p, const std::vector<mp_limb_t>& residues,
+                       const std::vector<std::vector<mp_limb_t>>& powers, nmod_t mod) {
   const Ring& ring = *p.ring();
   const std::size_t k = ring.num_variables();
   mp_limb_t sum = 0;
@@ -78,63 +97,56 @@ mp_limb_t evaluate_mod(const Polynomial& p, const std::vector<std::vector<mp_lim
   return sum;
 }
 
-std::vector<mp_limb_t> residues_of(const Polynomial& p, mp_limb_t prime) {
-  std::vector<mp_limb_t> out(p.num_terms());
-  for (std::size_t t = 0; t < p.num_terms(); ++t) {
-    const Integer c = integer_of(p.coefficient(t));
-    out[t] = mpz_fdiv_ui(c.get_mpz_t(), prime);
-  }
-  return out;
-}
-
 }  // namespace
 
 bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& parametrization, const Budget& budget) {
+  check_rings(implicit, parametrization);
   if (implicit.is_zero()) return true;
   const RingPtr& params = parametrization.parameter_ring;
   const std::size_t k = params->num_variables();
+  const std::size_t n = parametrization.coordinates.size();
   const std::int32_t d = implicit.total_degree();
 
-  // ω = lcm of the denominators, ξ_i = p_i·(ω / q_i); all scaled to integers (G only
-  // changes by a non-zero constant).
+  // ω = lcm of the denominators and ξ_v = p_v·(ω / q_v), in `forms` as ω, ξ_1, …, ξ_n;
+  // all scaled to integers (G only changes by a non-zero constant).
   Polynomial w = Polynomial::constant(params, Rational(1));
   for (const auto& c : parametrization.coordinates) w = lcm(w, c.denominator());
-  std::array<Polynomial, 4> wxyz = {w, w, w, w};
-  for (std::size_t v = 0; v < 3; ++v) {
-    const auto& c = parametrization.coordinates[v];
-    wxyz[v + 1] = c.numerator() * divide_exact(w, c.denominator());
-  }
+  std::vector<Polynomial> forms = {w};
+  for (const auto& c : parametrization.coordinates) forms.push_back(c.numerator() * divide_exact(w, c.denominator()));
   Integer denominator = 1;
-  for (const auto& p : wxyz) {
+  for (const auto& p : forms) {
     if (!p.is_zero()) {
       mpz_lcm(denominator.get_mpz_t(), denominator.get_mpz_t(), to_mpq(p.content()).get_den().get_mpz_t());
     }
   }
-  for (auto& p : wxyz) p = p.scaled(to_rational(denominator));
+  for (auto& p : forms) p = p.scaled(to_rational(denominator));
   const Polynomial f = implicit.primitive_part();
 
-  std::vector<std::int32_t> grid(k, 1);
+  // The grid: d·m_j + 1 points along parameter j.
+  std::vector<std::size_t> grid(k);
+  std::vector<std::int32_t> top(k, 0);
   double points = 1;
   for (std::size_t j = 0; j < k; ++j) {
-    std::int32_t m = 0;
-    for (const auto& p : wxyz) m = std::max(m, p.degree_in(j));
-    grid[j] = d * m + 1;
-    points *= grid[j];
+    for (const auto& p : forms) top[j] = std::max(top[j], p.degree_in(j));
+    grid[j] = static_cast<std::size_t>(d * top[j]) + 1;
+    points *= static_cast<double>(grid[j]);
   }
   if (points > kMaxGridPoints) return substitutes_to_zero_symbolic(implicit, parametrization, budget);
 
-  // B = Σ |f_α| ‖ξ‖^a ‖η‖^b ‖ζ‖^c ‖ω‖^(d−|α|) bounds every coefficient of G.
-  std::array<Integer, 4> norms;
-  for (std::size_t i = 0; i < 4; ++i) norms[i] = norm1(wxyz[i]);
+  // B = Σ |f_α|·‖ω‖^(d−|α|)·Π ‖ξ_v‖^α_v bounds every coefficient of G.
+  std::vector<Integer> norms;
+  for (const auto& p : forms) norms.push_back(norm1(p));
   const Ring& space = *f.ring();
   Integer bound = 0;
   for (std::size_t t = 0; t < f.num_terms(); ++t) {
     const std::int32_t* e = space.exponents(f.monomial(t));
+    std::int32_t degree = 0;
+    for (std::size_t v = 0; v < n; ++v) degree += e[v];
     Integer term = abs(integer_of(f.coefficient(t)));
     Integer factor;
-    mpz_pow_ui(factor.get_mpz_t(), norms[0].get_mpz_t(), static_cast<unsigned long>(d - e[0] - e[1] - e[2]));
+    mpz_pow_ui(factor.get_mpz_t(), norms[0].get_mpz_t(), static_cast<unsigned long>(d - degree));
     term *= factor;
-    for (std::size_t v = 0; v < 3; ++v) {
+    for (std::size_t v = 0; v < n; ++v) {
       mpz_pow_ui(factor.get_mpz_t(), norms[v + 1].get_mpz_t(), static_cast<unsigned long>(e[v]));
       term *= factor;
     }
@@ -143,30 +155,28 @@ bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& para
   const std::size_t needed_bits = mpz_sizeinbase(bound.get_mpz_t(), 2) + 1;
 
   PrimeSequence primes(/*skip=*/3);
-  std::size_t modulus_bits = 0;
-  std::vector<mp_limb_t> u(k);
-  std::vector<std::vector<mp_limb_t>> powers(k);
-  while (modulus_bits <= needed_bits) {
+  std::vector<std::vector<mp_limb_t>> parameter_powers(k);
+  std::vector<std::vector<mp_limb_t>> value_powers(n + 1, std::vector<mp_limb_t>(static_cast<std::size_t>(d) + 1));
+  for (std::size_t modulus_bits = 0; modulus_bits <= needed_bits;) {
     const mp_limb_t p = primes.next();
-    modulus_bits += FLINT_BIT_COUNT(p) - 1;  // p > 2^(bits-1): a lower bound on the product
+    modulus_bits += FLINT_BIT_COUNT(p) - 1;  // p > 2^(bits−1): a lower bound on the product's size
     nmod_t mod;
     nmod_init(&mod, p);
-    std::array<std::vector<mp_limb_t>, 4> coefficient_residues;
-    for (std::size_t i = 0; i < 4; ++i) coefficient_residues[i] = residues_of(wxyz[i], p);
+    std::vector<std::vector<mp_limb_t>> form_residues;
+    for (const auto& form : forms) form_residues.push_back(residues_of(form, p));
     const std::vector<mp_limb_t> f_residues = residues_of(f, p);
+    // Parameter j takes the values 0, 1, …, grid[j] − 1: distinct modulo p.
     std::vector<std::size_t> index(k, 0);
     for (bool more = true; more;) {
-      // The grid point: parameter j takes the value index[j] (distinct modulo p).
       for (std::size_t j = 0; j < k; ++j) {
-        const std::int32_t top = std::max({wxyz[0].degree_in(j), wxyz[1].degree_in(j), wxyz[2].degree_in(j),
-                                           wxyz[3].degree_in(j), 0});
-        powers[j].assign(static_cast<std::size_t>(top) + 1, 1);
-        for (std::size_t e = 1; e < powers[j].size(); ++e) powers[j][e] = nmod_mul(powers[j][e - 1], index[j], mod);
+        parameter_powers[j].assign(static_cast<std::size_t>(top[j]) + 1, 1);
+        for (std::size_t e = 1; e < parameter_powers[j].size(); ++e) {
+          parameter_powers[j][e] = nmod_mul(parameter_powers[j][e - 1], index[j], mod);
+        }
       }
-      std::array<std::vector<mp_limb_t>, 4> value_powers;
-      for (std::size_t i = 0; i < 4; ++i) {
-        const mp_limb_t value = evaluate_mod(wxyz[i], powers, mod, coefficient_residues[i]);
-        value_powers[i].assign(static_cast<std::size_t>(d) + 1, 1);
+      for (std::size_t i = 0; i <= n; ++i) {
+        const mp_limb_t value = evaluate_mod(forms[i], form_residues[i], parameter_powers, mod);
+        value_powers[i][0] = 1;
         for (std::size_t e = 1; e <= static_cast<std::size_t>(d); ++e) {
           value_powers[i][e] = nmod_mul(value_powers[i][e - 1], value, mod);
         }
@@ -174,15 +184,20 @@ bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& para
       mp_limb_t g = 0;
       for (std::size_t t = 0; t < f.num_terms(); ++t) {
         const std::int32_t* e = space.exponents(f.monomial(t));
-        mp_limb_t term = nmod_mul(f_residues[t], value_powers[0][static_cast<std::size_t>(d - e[0] - e[1] - e[2])], mod);
-        for (std::size_t v = 0; v < 3; ++v) term = nmod_mul(term, value_powers[v + 1][static_cast<std::size_t>(e[v])], mod);
+        std::int32_t degree = 0;
+        mp_limb_t term = f_residues[t];
+        for (std::size_t v = 0; v < n; ++v) {
+          term = nmod_mul(term, value_powers[v + 1][static_cast<std::size_t>(e[v])], mod);
+          degree += e[v];
+        }
+        term = nmod_mul(term, value_powers[0][static_cast<std::size_t>(d - degree)], mod);
         g = nmod_add(g, term, mod);
       }
       if (g != 0) return false;  // G mod p ≠ 0, so G ≠ 0
-      // Next grid point (last parameter fastest); a budget check per grid line.
+      // The next grid point (last parameter fastest); a budget check per grid line.
       more = false;
       for (std::size_t j = k; j-- > 0;) {
-        if (++index[j] < static_cast<std::size_t>(grid[j])) {
+        if (++index[j] < grid[j]) {
           more = true;
           break;
         }

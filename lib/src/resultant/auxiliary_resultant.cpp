@@ -15,6 +15,8 @@ const char* to_string(AuxiliaryFormulation formulation) {
       return "dixon";
     case AuxiliaryFormulation::macaulay:
       return "macaulay";
+    case AuxiliaryFormulation::sylvester:
+      return "sylvester";
   }
   return "?";
 }

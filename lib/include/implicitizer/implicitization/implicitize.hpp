@@ -13,8 +13,15 @@
 
 namespace implicitizer {
 
-/// The ring of implicit equations: x, y, z with grevlex (the contract's output order).
+/// The ring of implicit equations of surfaces: x, y, z with grevlex (the contract's
+/// output order).
 RingPtr space_ring();
+
+/// The ring of implicit equations of plane curves: x, y with grevlex.
+RingPtr plane_ring();
+
+/// space_ring() for 3 coordinates, plane_ring() for 2.
+inline RingPtr implicit_ring(std::size_t coordinates) { return coordinates == 2 ? plane_ring() : space_ring(); }
 
 /// Which route computes the equation.
 enum class ImplicitizationMethod {
@@ -35,7 +42,7 @@ struct ImplicitizeOptions {
 
 /// The implicit equation and how it was found.
 struct ImplicitizeResult {
-  Polynomial implicit{space_ring()};  ///< primitive, positive leading coefficient, ring x,y,z grevlex
+  Polynomial implicit{space_ring()};  ///< primitive, positive leading coefficient, in implicit_ring()
   std::int32_t degree = 0;         ///< total degree of `implicit`
   std::string method;              ///< the route used ("groebner" or "resultant")
   bool verified = false;           ///< substitution into `implicit` gave exactly 0
@@ -52,14 +59,16 @@ struct ImplicitizeResult {
   std::string macaulay2_script;    ///< recomputes the elimination in Macaulay2
 };
 
-/// The implicit equation of the image, verified by substitution, by the route of
+/// The implicit equation of the image (a surface f(x, y, z) = 0 for three
+/// coordinates, a curve f(x, y) = 0 for two), verified by substitution, by the route of
 /// `options.method`:
 ///   - groebner: the generator of the elimination ideal of I = ⟨q_i·X_i − p_i, 1 − L·w⟩
 ///     (L the lcm of the denominators; w only when L is not constant);
-///   - resultant: the square-free part gcd-free of the auxiliary resultant
-///     (Theorem 1.13), for two parameters; NoSingleEquation with code `base_points`
-///     when the auxiliary resultant vanishes identically (Theorem 1.14), InputError
-///     `method_not_applicable` for another number of parameters;
+///   - resultant: the square-free part of the auxiliary resultant (Theorem 1.13),
+///     for a surface in two parameters (Dixon or Macaulay) or a plane curve in one
+///     (Sylvester); NoSingleEquation with code `base_points` when the auxiliary
+///     resultant vanishes identically (Theorem 1.14), InputError
+///     `method_not_applicable` for other numbers of parameters;
 ///   - auto: resultant when it applies, else groebner (the rule and the measurements
 ///     behind it are in docs/algorithms.md).
 /// Throws NoSingleEquation when the ideal is zero or needs several generators (the

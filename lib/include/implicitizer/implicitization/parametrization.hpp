@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// A rational parametrization x = X(params), y = Y(params), z = Z(params) read from
-/// the contract's syntax.
+/// A rational parametrization x = X(params), y = Y(params)[, z = Z(params)] read from
+/// the contract's syntax: a surface (or any image) in space, or a plane curve.
 
 #include <array>
 #include <optional>
@@ -13,12 +13,17 @@
 
 namespace implicitizer {
 
-/// Three rational functions in the parameters, each in lowest terms.
+/// Two or three rational functions in the parameters, each in lowest terms: the
+/// coordinates x, y (and z) of the image.
 struct Parametrization {
-  RingPtr parameter_ring;                        ///< the parameters, grevlex
-  std::array<RationalFunction, 3> coordinates;   ///< x, y, z
-  std::array<std::string, 3> sources;            ///< the texts they were read from
+  RingPtr parameter_ring;                      ///< the parameters, grevlex
+  std::vector<RationalFunction> coordinates;   ///< x, y and, in space, z
+  std::vector<std::string> sources;            ///< the texts they were read from
 };
+
+/// The names of the coordinates of a parametrization with `count` (2 or 3)
+/// coordinates: x, y and z.
+std::vector<std::string> coordinate_names(std::size_t count);
 
 /// Reads x, y, z. Parameters default to every identifier other than x, y, z, in order
 /// of first appearance (x's text first); `parameters` names them explicitly.
@@ -27,6 +32,13 @@ struct Parametrization {
 /// `unknown_variable` (an identifier not among explicit parameters),
 /// `division_by_zero` (a denominator that is identically zero).
 Parametrization parse_parametrization(const std::string& x, const std::string& y, const std::string& z,
+                                      const std::optional<std::vector<std::string>>& parameters = std::nullopt,
+                                      const Budget& budget = Budget());
+
+/// The same for two or three coordinate texts (x, y[, z]): two make a plane
+/// parametrization, whose implicit equation is a curve f(x, y). Throws
+/// std::invalid_argument for another count.
+Parametrization parse_parametrization(const std::vector<std::string>& coordinates,
                                       const std::optional<std::vector<std::string>>& parameters = std::nullopt,
                                       const Budget& budget = Budget());
 

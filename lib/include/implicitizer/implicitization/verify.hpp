@@ -6,7 +6,8 @@
 
 namespace implicitizer {
 
-/// Whether F(X, Y, Z) = 0 exactly, for F in ℚ[x,y,z] of degree d and X = ξ/ω,
+/// Whether F(X, Y, Z) = 0 exactly (F(X, Y) = 0 for a plane parametrization: one
+/// variable of F per coordinate), for F of degree d and X = ξ/ω,
 /// Y = η/ω, Z = ζ/ω over the lcm ω of the denominators: decides whether the
 /// polynomial G = ω^d·F(ξ/ω, η/ω, ζ/ω) of the parameters is zero.
 ///

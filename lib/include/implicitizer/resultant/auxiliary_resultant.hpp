@@ -21,9 +21,10 @@ namespace implicitizer {
 enum class AuxiliaryFormulation {
   dixon,     ///< tensor product, bidegree (m, n): Dixon's 2mn × 2mn matrix, degree bound 2mn
   macaulay,  ///< total degree n on P²: Macaulay's quotient det M / det E, degree bound n²
+  sylvester, ///< a plane curve of degree n on P¹: Sylvester's 2n × 2n matrix, degree bound n
 };
 
-/// "dixon" or "macaulay".
+/// "dixon", "macaulay" or "sylvester".
 const char* to_string(AuxiliaryFormulation formulation);
 
 /// Options of auxiliary_resultant().

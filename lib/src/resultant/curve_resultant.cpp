@@ -1,0 +1,83 @@
+#include "implicitizer/resultant/curve_resultant.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+namespace implicitizer {
+
+namespace {
+
+Integer integer_of(const Rational& q) {
+  const mpq_class v = to_mpq(q);
+  if (v.get_den() != 1) throw std::invalid_argument("curve_sylvester_pencil: integer coefficients expected");
+  return v.get_num();
+}
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+MatrixPencil curve_sylvester_pencil(const std::array<Polynomial, 3>& wxy) {
+  std::int32_t n = 0;
+  for (const auto& p : wxy) {
+    if (p.ring()->num_variables() != 1) throw std::invalid_argument("curve_sylvester_pencil: one parameter expected");
+    n = std::max(n, p.total_degree());
+  }
+  if (n < 1) throw std::invalid_argument("curve_sylvester_pencil: the curve must involve its parameter");
+  const auto size = static_cast<std::size_t>(2 * n);
+  MatrixPencil pencil(size, 2);
+  const Ring& ring = *wxy[0].ring();
+  // Row `row` holds t^shift·(numerator − u·ω); column c is the power t^(2n−1−c).
+  auto place = [&](std::size_t row, std::int32_t shift, const Polynomial& numerator, std::size_t part) {
+    auto column = [&](std::int32_t exponent) { return static_cast<std::size_t>(2 * n - 1 - (exponent + shift)); };
+    for (std::size_t t = 0; t < numerator.num_terms(); ++t) {
+      pencil.at(0, row, column(ring.exponents(numerator.monomial(t))[0])) = integer_of(numerator.coefficient(t));
+    }
+    for (std::size_t t = 0; t < wxy[0].num_terms(); ++t) {
+      pencil.at(part, row, column(ring.exponents(wxy[0].monomial(t))[0])) = -integer_of(wxy[0].coefficient(t));
+    }
+  };
+  for (std::int32_t i = 0; i < n; ++i) {
+    place(static_cast<std::size_t>(i), n - 1 - i, wxy[1], 1);
+    place(static_cast<std::size_t>(n + i), n - 1 - i, wxy[2], 2);
+  }
+  return pencil;
+}
+
+AuxiliaryResultant curve_auxiliary_resultant(const std::array<Polynomial, 3>& input, const RingPtr& plane,
+                                             const AuxiliaryResultantOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (plane->num_variables() != 2) throw std::invalid_argument("curve_auxiliary_resultant: the plane ring needs x, y");
+  // One common integer factor for ω, ξ, η (the resultant changes by a constant).
+  Integer denominator = 1;
+  for (const auto& p : input) {
+    if (!p.is_zero()) {
+      mpz_lcm(denominator.get_mpz_t(), denominator.get_mpz_t(), to_mpq(p.content()).get_den().get_mpz_t());
+    }
+  }
+  std::array<Polynomial, 3> wxy = input;
+  for (auto& p : wxy) p = p.scaled(to_rational(denominator));
+
+  AuxiliaryResultant result{Polynomial(plane), {}};
+  auto& stats = result.stats;
+  stats.formulation = AuxiliaryFormulation::sylvester;
+  for (const auto& p : wxy) stats.total_degree = std::max(stats.total_degree, p.total_degree());
+  if (stats.total_degree < 1) return result;  // a point
+  const MatrixPencil pencil = curve_sylvester_pencil(wxy);
+  stats.matrix_size = pencil.size();
+  stats.degree_bound = stats.total_degree;
+  stats.construction_ms = ms_since(start);
+  PencilDeterminantOptions determinant;
+  determinant.degree_bound = stats.degree_bound;
+  determinant.proven_bits = pencil.determinant_coefficient_bits();
+  determinant.threads = options.threads;
+  determinant.budget = options.budget;
+  const auto determinant_start = std::chrono::steady_clock::now();
+  result.resultant = pencil_determinant(pencil, plane, determinant, &stats.determinant);
+  stats.determinant_ms = ms_since(determinant_start);
+  return result;
+}
+
+}  // namespace implicitizer
