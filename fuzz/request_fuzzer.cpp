@@ -1,9 +1,10 @@
 /// \file
 /// libFuzzer target for the HTTP request decoders (server/codec's json_codec.hpp).
 ///
-/// On any bytes, decode_implicitize_request() and decode_groebner_request() may only
-/// return or throw InputError: malformed or non-UTF-8 JSON, deep nesting, wrong types,
-/// unknown or duplicate fields all have their code. A decoded request's expressions
+/// On any bytes, decode_implicitize_request(), decode_groebner_request() and
+/// decode_resultant_request() may only return or throw InputError: malformed or
+/// non-UTF-8 JSON, deep nesting, wrong types, unknown or duplicate fields all have
+/// their code. A decoded request's expressions
 /// then go through parse_expression(), as the handlers do, under the same rule. The
 /// algebra itself is not run (it is bounded by time, not by input size).
 
@@ -35,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const ImplicitizeRequest request = decode_implicitize_request(body);
     parse_field(request.x);
     parse_field(request.y);
-    parse_field(request.z);
+    if (request.z) parse_field(*request.z);
     if (request.parameters) {
       for (const std::string& name : *request.parameters) (void)is_identifier(name);
     }
@@ -44,6 +45,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const GroebnerRequest request = decode_groebner_request(body);
     for (const std::string& polynomial : request.polynomials) parse_field(polynomial);
+  } catch (const InputError&) {
+  }
+  try {
+    const ResultantRequest request = decode_resultant_request(body);
+    for (const std::string& polynomial : request.polynomials) parse_field(polynomial);
+    (void)is_identifier(request.variable);
   } catch (const InputError&) {
   }
   return 0;

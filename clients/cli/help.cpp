@@ -4,19 +4,22 @@ namespace implicitizer::cli {
 
 const char* const kGeneralHelp = R"(usage: implicitizer COMMAND [OPTIONS] [ARGUMENTS]
 
-Exact implicitization and Groebner bases over the rationals.
+Exact implicitization, Groebner bases and resultants over the rationals.
 
 commands:
   implicitize   the implicit equation of a parametrized surface
   groebner      the reduced Groebner basis of an ideal (or an elimination ideal)
+  resultant     the resultant of two polynomials with respect to one variable
   help [CMD]    this text, or the help of one command
   --version     the version
 
-  implicitizer implicitize --x E --y E --z E [--params s,t]
+  implicitizer implicitize --x E --y E [--z E] [--params s,t]
                [--method auto|groebner|resultant|interpolation] [--timeout SECONDS] [--json]
   implicitizer groebner [--vars x,y,z] [--order lex|grlex|grevlex] [--weights 1,2,3]
                [--eliminate s,t] [--timeout SECONDS] [--json] F [F ...]
-  both also take --strategy auto|normal|sugar, --criteria gm|seed|product|none, --max-terms N
+  implicitizer resultant --var t [--timeout SECONDS] [--max-terms N] [--json] F G
+  implicitize and groebner also take --strategy auto|normal|sugar,
+  --criteria gm|seed|product|none, --max-terms N
 
 syntax: numbers are exact (0.25, 1e-30); + - * / ^ (** = ^); ^ binds tightest, so
   -x^2 = -(x^2); 2x is 2*x and binds tighter than * and /, so 1/2x = 1/(2x);
@@ -27,18 +30,22 @@ exit status: 0 success, 1 internal error, 2 usage error, 3 invalid input,
 See docs/cli.md for every flag and error code.
 )";
 
-const char* const kImplicitizeHelp = R"(usage: implicitizer implicitize --x E --y E --z E [OPTIONS]
+const char* const kImplicitizeHelp = R"(usage: implicitizer implicitize --x E --y E [--z E] [OPTIONS]
 
 Prints the implicit equation F(x,y,z) = 0 of the surface x = E, y = E, z = E, as one
 line: expanded, grevlex x > y > z, integer coefficients with gcd 1, positive leading
-coefficient. The expressions may be rational functions of the parameters.
+coefficient. Without --z, the implicit curve F(x,y) = 0 of the plane
+parametrization. The expressions may be rational functions of the parameters.
 
 options:
-  --x E, --y E, --z E   the parametrization (required)
+  --x E, --y E          the parametrization (required)
+  --z E                 its third coordinate (omit it for a plane curve)
   --params s,t          the parameters (default: every identifier other than x, y, z,
                         in order of first appearance, --x first)
-  --method M            auto (default) or groebner; resultant and interpolation are
-                        not built yet (usage error)
+  --method M            auto (default): the resultant when it applies and there are
+                        no base points, else groebner; groebner: Buchberger;
+                        resultant: the auxiliary resultant, or exit 4 (base_points);
+                        interpolation is not built yet (usage error)
   --timeout SECONDS     wall-time limit, > 0 (default: none)
   --max-terms N         largest number of terms of any intermediate polynomial (default 0 = none)
   --strategy S          S-pair selection: auto (default: sugar for elimination
@@ -80,6 +87,27 @@ options:
 A polynomial may start with '-': only words starting with '--' are options ('--'
 ends them).
 exit status: 0 success, 2 usage error, 3 invalid input, 5 time or size limit.
+)";
+
+const char* const kResultantHelp = R"(usage: implicitizer resultant --var t [OPTIONS] F G
+
+Prints Res_t(F, G), the resultant of F and G as polynomials in t with coefficients
+in the other variables (the determinant of their Sylvester matrix), on one line:
+exact rational coefficients, terms in grevlex order on the variables of F and G in
+order of first appearance. It is 0 exactly when F and G have a common factor
+involving t (or one of them is 0); c^deg G when F = c does not involve t.
+
+options:
+  --var t               the variable to eliminate (required); it must occur in F or G
+  --timeout SECONDS     wall-time limit, > 0 (default: none)
+  --max-terms N         largest number of terms of any intermediate polynomial (default 0 = none)
+  --json                print the JSON object POST /v1/resultant returns
+  -h, --help            this text
+
+A polynomial may start with '-': only words starting with '--' are options ('--'
+ends them).
+exit status: 0 success, 2 usage error, 3 invalid input (parse error, unknown
+variable), 5 time or size limit.
 )";
 
 }  // namespace implicitizer::cli

@@ -11,5 +11,7 @@ extern const char* const kGeneralHelp;
 extern const char* const kImplicitizeHelp;
 /// `implicitizer groebner --help`.
 extern const char* const kGroebnerHelp;
+/// `implicitizer resultant --help`.
+extern const char* const kResultantHelp;
 
 }  // namespace implicitizer::cli

@@ -57,12 +57,13 @@ int run_implicitize_command(std::span<const std::string> args) {
       throw UsageError("unexpected argument '" + arguments.positionals().front() + "'");
     }
     report.json = arguments.has("json");
-    for (const char* coordinate : {"x", "y", "z"}) {
+    // --z is optional: without it the parametrization is a plane curve.
+    for (const char* coordinate : {"x", "y"}) {
       if (!arguments.has(coordinate)) throw UsageError(std::string("missing --") + coordinate);
     }
     request.x = *arguments.value("x");
     request.y = *arguments.value("y");
-    request.z = *arguments.value("z");
+    request.z = arguments.value("z");
     if (const auto params_text = arguments.value("params")) {
       request.parameters = split_list(*params_text, "params");
       report.field_texts["parameters"] = *params_text;
@@ -76,7 +77,7 @@ int run_implicitize_command(std::span<const std::string> args) {
   }
   report.field_texts["x"] = request.x;
   report.field_texts["y"] = request.y;
-  report.field_texts["z"] = request.z;
+  if (request.z) report.field_texts["z"] = *request.z;
 
   return run_reporting_errors(report, [&] {
     const ImplicitizeResult result = answer_implicitize_request(request, std::move(params));

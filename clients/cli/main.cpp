@@ -12,6 +12,7 @@
 #include "groebner_command.hpp"
 #include "help.hpp"
 #include "implicitize_command.hpp"
+#include "resultant_command.hpp"
 
 namespace {
 
@@ -26,6 +27,7 @@ int run(const std::vector<std::string>& words) {
   const std::span<const std::string> rest(words.data() + 1, words.size() - 1);
   if (command == "implicitize") return run_implicitize_command(rest);
   if (command == "groebner") return run_groebner_command(rest);
+  if (command == "resultant") return run_resultant_command(rest);
   if (command == "--version" || command == "version") {
     std::cout << "implicitizer " << IMPLICITIZER_VERSION << '\n';
     return kExitOk;
@@ -37,12 +39,14 @@ int run(const std::vector<std::string>& words) {
       std::cout << kImplicitizeHelp;
     } else if (rest.front() == "groebner") {
       std::cout << kGroebnerHelp;
+    } else if (rest.front() == "resultant") {
+      std::cout << kResultantHelp;
     } else {
       return report_usage_error("no help for unknown command '" + rest.front() + "'", nullptr);
     }
     return kExitOk;
   }
-  if (command == "resultant" || command == "sdf" || command == "render") {
+  if (command == "sdf" || command == "render") {
     return report_usage_error("the command '" + command + "' is not built yet", nullptr);
   }
   return report_usage_error("unknown command '" + command + "'", nullptr);

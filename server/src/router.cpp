@@ -8,6 +8,7 @@
 #include "handlers/healthz.hpp"
 #include "handlers/implicitize.hpp"
 #include "handlers/metrics.hpp"
+#include "handlers/resultant.hpp"
 #include "handlers/static_files.hpp"
 #include "implicitizer/core/errors.hpp"
 
@@ -60,6 +61,9 @@ Router::Router(HandlerContext context) : context_(std::move(context)), cors_(con
                      }});
   routes_.push_back(
       {"/v1/groebner", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r) { return handle_groebner(r, c); }});
+  routes_.push_back({"/v1/resultant", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r) {
+                       return handle_resultant(r, c);
+                     }});
 }
 
 std::vector<RouteInfo> Router::routes() const {

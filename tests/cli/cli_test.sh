@@ -92,7 +92,7 @@ expect_status "exponent not integer" 3 "exponent_not_integer" implicitize --x "s
 expect_status "two names need *" 3 "missing_operator" implicitize --x "s t" --y s --z t
 expect_status "unknown flag" 2 "unknown option --bogus" implicitize --x s --y t --z s --bogus
 expect_status "missing value" 2 "needs a value" implicitize --x s --y t --z
-expect_status "missing --z" 2 "missing --z" implicitize --x s --y t
+expect_status "missing --y" 2 "missing --y" implicitize --x s --z t
 expect_status "bad timeout" 2 "timeout" implicitize --x s+t --y s --z t --timeout abc
 expect_status "zero timeout" 2 "timeout" implicitize --x s+t --y s --z t --timeout 0
 expect_status "negative timeout" 2 "timeout" implicitize --x s+t --y s --z t --timeout -1
@@ -135,6 +135,15 @@ j['error']['code'] == 'no_single_equation' and 'x^2-y' in j['error']['generators
   implicitize --x t --y "t^2" --z "t^3" --json
 expect_json "unknown method JSON" 2 "j['error']['code'] == 'unknown_method' and j['error']['field'] == 'method'" \
   implicitize --x s+t --y s --z t --method interpolation --json
+
+# ---- implicitize: plane curves (no --z) ----
+expect "nodal cubic" 0 "x^3+x^2-y^2" implicitize --x "t^2-1" --y "t^3-t"
+expect "circle by Buchberger" 0 "x^2+y^2-1" implicitize --x "(1-t^2)/(1+t^2)" --y "2*t/(1+t^2)" --method groebner
+expect_json "curve JSON" 0 "
+j['implicit'] == 'x^2+y^2-1' and j['variables'] == ['x','y'] and j['method'] == 'resultant'
+and j['stats']['resultant']['formulation'] == 'sylvester' and 'x,y' in j['reproduce']['singular']" \
+  implicitize --x "(1-t^2)/(1+t^2)" --y "2*t/(1+t^2)" --json
+expect_status "two parameters fill the plane" 4 "dense in the plane" implicitize --x s --y t
 
 # ---- implicitize: the resultant route and auto ----
 expect "resultant plane" 0 "x-y-z" implicitize --x s+t --y s --z t --method resultant
@@ -189,15 +198,54 @@ and j['order'].startswith('weighted(1,1,0,0,0;')" groebner --json --eliminate s,
 expect_json "groebner error JSON" 3 "j['error']['code'] == 'unknown_variable' and j['error']['field'] == 'polynomials[0]'" \
   groebner --json --vars x,y x+z
 
+# ---- resultant ----
+expect "resultant" 0 "x*y^2+1" resultant --var t "t^2+x" "y*t+1"
+expect "resultant, swapped (variables in order of first appearance)" 0 "y^2*x+1" resultant --var t "y*t+1" "t^2+x"
+expect "resultant sign" 0 "-1" resultant --var t "t+1" t
+expect "resultant exact rationals" 0 "-61/180" resultant --var t "3/2*t+1/3" "t^2-1/5"
+expect "resultant eliminating x" 0 "y^2*z^2+y" resultant --var x "x^2+y" "x-y*z"
+expect "resultant of a constant" 0 "9" resultant --var t 3 "t^2+x"
+expect "resultant with zero" 0 "0" resultant --var t 0 "t^2+x"
+expect "common factor" 0 "0" resultant --var t "(t-x)*(t+1)" "(t-x)*y"
+expect "resultant, --var=t and leading minus" 0 "-x*y^2-1" resultant --var=t -- "-t^2-x" "y*t+1"
+expect "resultant, options after" 0 "x*y^2+1" resultant "t^2+x" "y*t+1" --var t --timeout 10
+expect_status "resultant unknown variable" 3 "^error: unknown_variable in variable" resultant --var s "t^2+x" "y*t+1"
+expect_status "resultant bad variable" 3 "invalid_variables in variable" resultant --var 2t "t^2+x" "y*t+1"
+expect_status "resultant parse error" 3 "^error: unexpected_character at position 4 in polynomials\[1\]" \
+  resultant --var t "t^2+x" 'y*t+$'
+expect_status "resultant non-constant denominator" 3 "non_constant_denominator" resultant --var t "t/x" "t+1"
+expect_status "resultant missing --var" 2 "missing --var" resultant "t^2+x" "y*t+1"
+expect_status "resultant one polynomial" 2 "exactly two polynomials" resultant --var t "t^2+x"
+expect_status "resultant three polynomials" 2 "exactly two polynomials" resultant --var t t x y
+expect_status "resultant strategy is not a flag" 2 "unknown option --strategy" resultant --var t t x --strategy sugar
+expect_status "resultant bad timeout" 2 "timeout" resultant --var t t x --timeout 0
+SLOW_F="(x+y+z+1)^6*t^12+(x-y)^5*t^7+x*y*z*t+1"
+SLOW_G="(x-2*y+z)^6*t^11+(y+z)^4*t^5+x*t^2+7"
+expect_status "resultant time limit" 5 "time_limit_exceeded .*resultant" resultant --var t "$SLOW_F" "$SLOW_G" --timeout 0.2
+expect_status "resultant size limit" 5 "size_limit_exceeded" resultant --var t "$SLOW_F" "$SLOW_G" --max-terms 50
+expect_json "resultant JSON shape" 0 "
+j['resultant'] == 'x*y^2+1' and j['variables'] == ['x','y'] and j['degree'] == 3
+and j['method'] == 'subresultant' and isinstance(j['elapsed_ms'], (int, float))
+and list(j) == ['resultant','variables','degree','method','elapsed_ms']" resultant --var t "t^2+x" "y*t+1" --json
+expect_json "resultant error JSON" 3 "
+j['error']['code'] == 'unknown_variable' and j['error']['field'] == 'variable'" resultant --var s t x --json
+expect_json "resultant limit JSON" 5 "j['error']['code'] == 'time_limit_exceeded' and j['error']['limit'] == 'time'" \
+  resultant --var t "$SLOW_F" "$SLOW_G" --timeout 0.2 --json
+
 # ---- the program itself ----
 expect_status "unknown command" 2 "unknown command" frobnicate
 expect_status "no command" 2 "usage" ""
 run
 if [[ $(status) == 2 ]]; then pass; else fail "no arguments (want status 2)"; fi
 run --help
-if [[ $(status) == 0 ]] && grep -q "implicitize" "$WORK/out" && grep -q "groebner" "$WORK/out"; then pass; else fail "--help"; fi
+if [[ $(status) == 0 ]] && grep -q "implicitize" "$WORK/out" && grep -q "groebner" "$WORK/out" \
+  && grep -q "resultant" "$WORK/out"; then pass; else fail "--help"; fi
 run help groebner
 if [[ $(status) == 0 ]] && grep -q -- "--eliminate" "$WORK/out"; then pass; else fail "help groebner"; fi
+run help resultant
+if [[ $(status) == 0 ]] && grep -q -- "--var" "$WORK/out"; then pass; else fail "help resultant"; fi
+run resultant --help
+if [[ $(status) == 0 ]] && grep -q -- "--var" "$WORK/out"; then pass; else fail "resultant --help"; fi
 run implicitize --help
 if [[ $(status) == 0 ]] && grep -q -- "--criteria" "$WORK/out"; then pass; else fail "implicitize --help"; fi
 run --version

@@ -8,7 +8,9 @@
 
 #include "implicitizer/codec/groebner_request.hpp"
 #include "implicitizer/codec/implicitize_request.hpp"
+#include "implicitizer/codec/resultant_request.hpp"
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/polynomial/printer.hpp"
 
 namespace implicitizer {
 namespace {
@@ -30,7 +32,7 @@ TEST(DecodeImplicitizeRequest, ReadsEveryField) {
       R"({"x":"s+t","y":"s","z":"t","parameters":["s","t"],"method":"groebner","timeout_ms":1500})");
   EXPECT_EQ(r.x, "s+t");
   EXPECT_EQ(r.y, "s");
-  EXPECT_EQ(r.z, "t");
+  EXPECT_EQ(r.z, std::optional<std::string>("t"));
   ASSERT_TRUE(r.parameters.has_value());
   EXPECT_EQ(*r.parameters, (std::vector<std::string>{"s", "t"}));
   EXPECT_EQ(r.method, "groebner");
@@ -57,9 +59,11 @@ TEST(DecodeImplicitizeRequest, RefusesBadBodies) {
 }
 
 TEST(DecodeImplicitizeRequest, NamesTheOffendingField) {
-  const InputError missing = input_error_of([] { decode_implicitize_request(R"({"x":"s","y":"t"})"); });
+  const InputError missing = input_error_of([] { decode_implicitize_request(R"({"x":"s","z":"t"})"); });
   EXPECT_EQ(missing.code(), "missing_field");
-  EXPECT_EQ(missing.field(), "z");
+  EXPECT_EQ(missing.field(), "y");
+  // Without z the request is a plane curve.
+  EXPECT_FALSE(decode_implicitize_request(R"({"x":"s","y":"t"})").z);
   const InputError type = input_error_of([] { decode_implicitize_request(R"({"x":1,"y":"t","z":"s"})"); });
   EXPECT_EQ(type.code(), "wrong_type");
   EXPECT_EQ(type.field(), "x");
@@ -141,6 +145,99 @@ TEST(AnswerGroebnerRequest, ErrorsNameTheirField) {
   EXPECT_EQ(input_error_of([&] { answer_groebner_request(r); }).code(), "empty_input");
 }
 
+TEST(DecodeResultantRequest, ReadsEveryField) {
+  const ResultantRequest r =
+      decode_resultant_request(R"({"polynomials":["t^2+x","y*t+1"],"variable":"t","timeout_ms":250})");
+  EXPECT_EQ(r.polynomials, (std::vector<std::string>{"t^2+x", "y*t+1"}));
+  EXPECT_EQ(r.variable, "t");
+  ASSERT_TRUE(r.timeout_seconds.has_value());
+  EXPECT_DOUBLE_EQ(*r.timeout_seconds, 0.25);
+  EXPECT_FALSE(decode_resultant_request(R"({"polynomials":["t","x"],"variable":"t"})").timeout_seconds.has_value());
+}
+
+TEST(DecodeResultantRequest, RefusesBadFields) {
+  const InputError count = input_error_of([] { decode_resultant_request(R"({"polynomials":["t"],"variable":"t"})"); });
+  EXPECT_EQ(count.code(), "wrong_number_of_polynomials");
+  EXPECT_EQ(count.field(), "polynomials");
+  EXPECT_EQ(input_error_of([] { decode_resultant_request(R"({"polynomials":["t","x","y"],"variable":"t"})"); }).code(),
+            "wrong_number_of_polynomials");
+  const InputError missing = input_error_of([] { decode_resultant_request(R"({"polynomials":["t","x"]})"); });
+  EXPECT_EQ(missing.code(), "missing_field");
+  EXPECT_EQ(missing.field(), "variable");
+  EXPECT_EQ(input_error_of([] { decode_resultant_request(R"({"variable":"t"})"); }).field(), "polynomials");
+  EXPECT_EQ(input_error_of([] { decode_resultant_request(R"({"polynomials":["t",1],"variable":"t"})"); }).field(),
+            "polynomials[1]");
+  EXPECT_EQ(input_error_of([] { decode_resultant_request(R"({"polynomials":["t","x"],"variable":["t"]})"); }).code(),
+            "wrong_type");
+  const InputError unknown =
+      input_error_of([] { decode_resultant_request(R"({"polynomials":["t","x"],"variable":"t","var":"t"})"); });
+  EXPECT_EQ(unknown.code(), "unknown_field");
+  EXPECT_NE(std::string(unknown.what()).find("(allowed: polynomials, variable, timeout_ms)"), std::string::npos);
+  EXPECT_EQ(input_error_of([] { decode_resultant_request(R"({"polynomials":["t","x"],"variable":"t",)"); }).code(),
+            "invalid_json");
+}
+
+TEST(AnswerResultantRequest, EncodesTheContractShape) {
+  ResultantRequest r;
+  r.polynomials = {"t^2+x", "y*t+1"};
+  r.variable = "t";
+  const std::string json = encode_resultant_response(answer_resultant_request(r));
+  EXPECT_EQ(json.rfind(R"({"resultant":"x*y^2+1","variables":["x","y"],"degree":3,"method":"subresultant",)"
+                       R"("elapsed_ms":)",
+                       0),
+            0u)
+      << json;
+  // Variables in order of first appearance; rational coefficients stay exact.
+  r.polynomials = {"3/2*b*t+1/3", "t^2-a/5"};
+  const ResultantAnswer a = answer_resultant_request(r);
+  EXPECT_EQ(a.variables, (std::vector<std::string>{"b", "a"}));
+  EXPECT_EQ(to_string(a.resultant), "-9/20*b^2*a+1/9");  // Res(αt + β, t^2 − γ) = β^2 − α^2·γ
+  // A zero resultant has degree -1.
+  r.polynomials = {"t-x", "t^2-x^2"};
+  const ResultantAnswer zero = answer_resultant_request(r);
+  EXPECT_TRUE(zero.resultant.is_zero());
+  EXPECT_EQ(zero.degree, -1);
+  EXPECT_NE(encode_resultant_response(zero).find(R"("resultant":"0","variables":["x"],"degree":-1,)"),
+            std::string::npos);
+}
+
+TEST(AnswerResultantRequest, ErrorsNameTheirField) {
+  ResultantRequest r;
+  r.polynomials = {"t+x", "t+$"};
+  r.variable = "t";
+  const InputError parse = input_error_of([&] { answer_resultant_request(r); });
+  EXPECT_EQ(parse.code(), "unexpected_character");
+  EXPECT_EQ(parse.field(), "polynomials[1]");
+  EXPECT_EQ(parse.position(), 2u);
+  r.polynomials = {"t+x", "1/t"};
+  const InputError denominator = input_error_of([&] { answer_resultant_request(r); });
+  EXPECT_EQ(denominator.code(), "non_constant_denominator");
+  EXPECT_EQ(denominator.field(), "polynomials[1]");
+  r.polynomials = {"t+x", "t-x"};
+  r.variable = "s";
+  const InputError unknown = input_error_of([&] { answer_resultant_request(r); });
+  EXPECT_EQ(unknown.code(), "unknown_variable");
+  EXPECT_EQ(unknown.field(), "variable");
+  r.variable = "2t";
+  EXPECT_EQ(input_error_of([&] { answer_resultant_request(r); }).code(), "invalid_variables");
+  r.variable = "t";
+  r.polynomials = {"t"};
+  EXPECT_EQ(input_error_of([&] { answer_resultant_request(r); }).code(), "wrong_number_of_polynomials");
+}
+
+TEST(AnswerResultantRequest, TimeoutStopsIt) {
+  ResultantRequest r;
+  r.polynomials = {"(x+y+z+1)^6*t^12+(x-y)^5*t^7+x*y*z*t+1", "(x-2*y+z)^6*t^11+(y+z)^4*t^5+x*t^2+7"};
+  r.variable = "t";
+  r.timeout_seconds = 1e-3;
+  try {
+    answer_resultant_request(r);
+    ADD_FAILURE() << "no LimitExceeded";
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit(), Limit::time);
+  }
+}
+
 TEST(AnswerImplicitizeRequest, EncodesTheContractShape) {
   ImplicitizeRequest r;
   r.x = "s+t";
@@ -164,6 +261,18 @@ TEST(AnswerImplicitizeRequest, EncodesTheContractShape) {
   const InputError method = input_error_of([&] { answer_implicitize_request(r); });
   EXPECT_EQ(method.code(), "unknown_method");
   EXPECT_EQ(method.field(), "method");
+}
+
+TEST(AnswerImplicitizeRequest, PlaneCurveWithoutZ) {
+  // The folium-like cubic x = t/(1+t^3)... here the nodal cubic x = t^2 - 1,
+  // y = t^3 - t: y^2 = x^2 (x + 1), by the Sylvester resultant.
+  ImplicitizeRequest r;
+  r.x = "t^2-1";
+  r.y = "t^3-t";
+  const std::string json = encode_implicitize_response(answer_implicitize_request(r));
+  EXPECT_EQ(json.rfind(R"({"implicit":"x^3+x^2-y^2","degree":3,"variables":["x","y"],"method":"resultant",)", 0), 0u)
+      << json;
+  EXPECT_NE(json.find(R"("formulation":"sylvester")"), std::string::npos) << json;
 }
 
 TEST(EncodeError, Shapes) {

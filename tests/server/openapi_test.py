@@ -24,7 +24,8 @@ import yaml
 
 HTTP_METHODS = {"get", "put", "post", "delete", "options", "head", "patch", "trace"}
 REQUESTS = {"/v1/implicitize": ("implicitize", "ImplicitizeRequest"),
-            "/v1/groebner": ("groebner", "GroebnerRequest")}
+            "/v1/groebner": ("groebner", "GroebnerRequest"),
+            "/v1/resultant": ("resultant", "ResultantRequest")}
 
 failures = []
 

@@ -73,6 +73,21 @@ TEST_F(RouterTest, Groebner) {
   EXPECT_NE(response.body().find(R"("basis":["y^2-1/2","x-y"])"), std::string::npos) << response.body();
 }
 
+TEST_F(RouterTest, Resultant) {
+  Response response = answer(post("/v1/resultant", R"({"polynomials": ["t^2+x", "y*t+1"], "variable": "t"})"));
+  EXPECT_EQ(response.result(), http::status::ok);
+  EXPECT_EQ(response.body().rfind(R"({"resultant":"x*y^2+1","variables":["x","y"],"degree":3,)", 0), 0u)
+      << response.body();
+  // A wrong count is refused by the decoder, before any worker is involved.
+  response = answer(post("/v1/resultant", R"({"polynomials": ["t"], "variable": "t"})"));
+  EXPECT_EQ(response.result(), http::status::bad_request);
+  EXPECT_NE(response.body().find(R"("code":"wrong_number_of_polynomials")"), std::string::npos) << response.body();
+  // An unknown variable is found while answering: still 400, naming the field.
+  response = answer(post("/v1/resultant", R"({"polynomials": ["t", "x"], "variable": "s"})"));
+  EXPECT_EQ(response.result(), http::status::bad_request);
+  EXPECT_NE(response.body().find(R"("field":"variable")"), std::string::npos) << response.body();
+}
+
 TEST_F(RouterTest, InputErrorsAre400WithCodeAndPosition) {
   Response response = answer(post("/v1/implicitize", R"({"x": "s", "y":)"));
   EXPECT_EQ(response.result(), http::status::bad_request);
@@ -211,7 +226,8 @@ TEST_F(RouterTest, MetricsExposeRequestsAndCache) {
 TEST_F(RouterTest, KnowsItsRoutes) {
   std::vector<std::string> paths;
   for (const RouteInfo& route : router_.routes()) paths.push_back(route.path);
-  EXPECT_EQ(paths, (std::vector<std::string>{"/healthz", "/metrics", "/v1/implicitize", "/v1/groebner"}));
+  EXPECT_EQ(paths,
+            (std::vector<std::string>{"/healthz", "/metrics", "/v1/implicitize", "/v1/groebner", "/v1/resultant"}));
 }
 
 }  // namespace

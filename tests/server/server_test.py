@@ -18,8 +18,9 @@ from server_harness import Server  # noqa: E402
 
 BIN = sys.argv[1]
 SPHERE = {"x": "2*s/(1+s^2+t^2)", "y": "2*t/(1+s^2+t^2)", "z": "(1-s^2-t^2)/(1+s^2+t^2)"}
-# Takes far longer than any timeout used here (> 15 s with the current engine).
-SLOW = {"x": "s^3+t^2*s", "y": "t^3-s", "z": "s*t^2+t^4"}
+# Takes far longer than any timeout used here (> 15 s by Buchberger, which it forces:
+# it has base points, so auto would take the same route anyway).
+SLOW = {"x": "s^3+t^2*s", "y": "t^3-s", "z": "s*t^2+t^4", "method": "groebner"}
 SECRET = "top-secret-outside-static"
 
 failures = []
@@ -84,6 +85,19 @@ def test_implicitize_sphere(s):
     check(headers.get("x-cache") == "miss", "first sphere request misses the cache")
 
 
+def test_implicitize_routes_and_curves(s):
+    status, _, body = s.post_json("/v1/implicitize", {"x": "t^2-1", "y": "t^3-t"})
+    check(status == 200 and body.get("implicit") == "x^3+x^2-y^2" and body.get("variables") == ["x", "y"]
+          and body.get("method") == "resultant", "plane curve without z: %s %r" % (status, body))
+    status, _, body = s.post_json("/v1/implicitize", dict(SPHERE, method="resultant"))
+    check(status == 422 and error_code(body) == "base_points", "base points refused: %s %r" % (status, body))
+    status, _, body = s.post_json("/v1/implicitize", {"x": "s*t", "y": "s", "z": "t", "method": "resultant"})
+    check(status == 200 and body.get("stats", {}).get("resultant", {}).get("formulation") == "dixon",
+          "bilinear patch by Dixon: %s %r" % (status, body))
+    status, _, body = s.post_json("/v1/implicitize", {"x": "s", "y": "t", "z": "u", "method": "resultant"})
+    check(status == 400 and error_code(body) == "method_not_applicable", "three parameters: %s %r" % (status, body))
+
+
 def test_cache(s):
     hits = s.metric("implicitizer_cache_hits_total")
     # Same request, other key order, spacing and timeout: the same canonical request.
@@ -105,12 +119,64 @@ def test_groebner(s):
     check(status == 200 and body.get("elimination_ideal") == ["x^3-y^2"], "groebner elimination %r" % body)
 
 
+# Degrees 12 and 11 in t with dense coefficients: minutes of work, so any timeout here stops it.
+SLOW_RESULTANT = {"polynomials": ["(x+y+z+1)^6*t^12+(x-y)^5*t^7+x*y*z*t+1",
+                                  "(x-2*y+z)^6*t^11+(y+z)^4*t^5+x*t^2+7"], "variable": "t"}
+
+
+def test_resultant(s):
+    request = {"polynomials": ["t^2+x", "y*t+1"], "variable": "t"}
+    status, headers, body = s.post_json("/v1/resultant", request)
+    check(status == 200 and body.get("resultant") == "x*y^2+1", "resultant: %s %r" % (status, body))
+    check(body.get("variables") == ["x", "y"] and body.get("degree") == 3 and body.get("method") == "subresultant"
+          and isinstance(body.get("elapsed_ms"), (int, float)), "resultant fields: %r" % body)
+    check(headers.get("x-cache") == "miss", "first resultant misses the cache")
+    status, headers, again = s.post_json("/v1/resultant", dict(request, timeout_ms=5000))
+    check(status == 200 and headers.get("x-cache") == "hit" and again == body, "repeated resultant is a cache hit")
+    # Exact rationals, and a variable that is not the last one.
+    status, _, body = s.post_json("/v1/resultant", {"polynomials": ["3/2*t+1/3", "t^2-1/5"], "variable": "t"})
+    check(status == 200 and body.get("resultant") == "-61/180" and body.get("degree") == 0, "rational: %r" % body)
+    status, _, body = s.post_json("/v1/resultant", {"polynomials": ["x^2+y", "x-y*z"], "variable": "x"})
+    check(status == 200 and body.get("resultant") == "y^2*z^2+y" and body.get("variables") == ["y", "z"],
+          "eliminating x: %r" % body)
+    status, _, body = s.post_json("/v1/resultant", {"polynomials": ["(t-x)*(t+1)", "(t-x)*y"], "variable": "t"})
+    check(status == 200 and body.get("resultant") == "0" and body.get("degree") == -1, "common factor: %r" % body)
+
+    cases = [
+        (b'{"polynomials": ["t"], "variable": "t"}', "wrong_number_of_polynomials", "polynomials"),
+        (b'{"polynomials": ["t", "x", "y"], "variable": "t"}', "wrong_number_of_polynomials", "polynomials"),
+        (b'{"polynomials": ["t", "x"]}', "missing_field", "variable"),
+        (b'{"variable": "t"}', "missing_field", "polynomials"),
+        (b'{"polynomials": ["t", 2], "variable": "t"}', "wrong_type", "polynomials[1]"),
+        (b'{"polynomials": ["t", "x"], "variable": "t", "var": "t"}', "unknown_field", "var"),
+        (b'{"polynomials": ["t", "x"], "variable": "s"}', "unknown_variable", "variable"),
+        (b'{"polynomials": ["t", "x"], "variable": "2t"}', "invalid_variables", "variable"),
+        (b'{"polynomials": ["t", "1/x"], "variable": "t"}', "non_constant_denominator", "polynomials[1]"),
+        (b'{"polynomials": ["t", "x"], "variable": "t", "timeout_ms": -5}', "invalid_value", "timeout_ms"),
+        (b'{"polynomials": ["t", "x"], "variable": ', "invalid_json", None),
+    ]
+    for raw, code, field in cases:
+        status, _, data = s.request("POST", "/v1/resultant", raw)
+        err = json.loads(data).get("error", {})
+        check(status == 400 and err.get("code") == code and err.get("field") == field,
+              "resultant %r: %s %r, want %s in %s" % (raw[:50], status, err, code, field))
+    _, _, data = s.request("POST", "/v1/resultant", b'{"polynomials": ["t+x", "t+*y"], "variable": "t"}')
+    err = json.loads(data)["error"]
+    check(err.get("code") == "unexpected_token" and err.get("position") == 2 and err.get("field") == "polynomials[1]",
+          "resultant parse error position: %r" % err)
+
+    start = time.time()
+    status, _, body = s.post_json("/v1/resultant", dict(SLOW_RESULTANT, timeout_ms=300))
+    check(status == 504 and error_code(body) == "time_limit_exceeded", "resultant timeout: %s %r" % (status, body))
+    check(time.time() - start < 5, "resultant timeout answered in %.1f s" % (time.time() - start))
+
+
 def test_input_errors(s):
     cases = [
         (b'{"x": "s", "y": ', "invalid_json"),
         (b'[1, 2]', "wrong_type"),
         (b'{"x": 1, "y": "t", "z": "s"}', "wrong_type"),
-        (b'{"x": "s", "y": "t"}', "missing_field"),
+        (b'{"x": "s", "z": "t"}', "missing_field"),
         (b'{"x": "s", "y": "t", "z": "s", "colour": 1}', "unknown_field"),
         (b'{"x": "s", "x": "s", "y": "t", "z": "s"}', "duplicate_field"),
         (b'[' * 5000 + b']' * 5000, "json_too_deep"),
@@ -333,6 +399,9 @@ def test_term_limit():
     try:
         status, _, body = s.post_json("/v1/groebner", {"polynomials": ["(x+y+z+1)^30"]})
         check(status == 413 and error_code(body) == "size_limit_exceeded", "size limit: %s %r" % (status, body))
+        status, _, body = s.post_json("/v1/resultant", SLOW_RESULTANT)
+        check(status == 413 and error_code(body) == "size_limit_exceeded",
+              "resultant size limit: %s %r" % (status, body))
         status, _, body = s.post_json("/v1/implicitize", SPHERE)
         check(status == 200, "small problems pass under the term limit: %s" % status)
     finally:
@@ -373,8 +442,10 @@ def main():
     tests = [
         lambda: test_healthz_and_static(s),
         lambda: test_implicitize_sphere(s),
+        lambda: test_implicitize_routes_and_curves(s),
         lambda: test_cache(s),
         lambda: test_groebner(s),
+        lambda: test_resultant(s),
         lambda: test_input_errors(s),
         lambda: test_semantic_errors(s),
         lambda: test_routing_errors(s),

@@ -359,6 +359,13 @@ std::vector<std::string> collect_identifiers(const Expression& e) {
   return out;
 }
 
+std::vector<std::string> collect_identifiers(const std::vector<std::unique_ptr<Expression>>& expressions) {
+  std::vector<std::string> out;
+  std::set<std::string> seen;
+  for (const auto& e : expressions) collect(*e, out, seen);
+  return out;
+}
+
 bool is_identifier(std::string_view name, std::size_t max_length) {
   if (name.empty() || name.size() > max_length || !is_identifier_start(name.front())) return false;
   for (char c : name) {

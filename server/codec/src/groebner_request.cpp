@@ -38,15 +38,7 @@ MonomialOrder order_of(const GroebnerRequest& request) {
 std::vector<std::string> variables_of(const GroebnerRequest& request,
                                       const std::vector<std::unique_ptr<Expression>>& expressions) {
   if (request.variables) return *request.variables;
-  std::vector<std::string> variables;
-  for (const auto& e : expressions) {
-    for (std::string& name : collect_identifiers(*e)) {
-      bool seen = false;
-      for (const std::string& v : variables) seen = seen || v == name;
-      if (!seen) variables.push_back(std::move(name));
-    }
-  }
-  return variables;
+  return collect_identifiers(expressions);
 }
 
 }  // namespace

@@ -14,8 +14,9 @@ ImplicitizeResult answer_implicitize_request(const ImplicitizeRequest& request, 
   }
   // The deadline starts here, so that parsing a huge input counts against it too.
   if (request.timeout_seconds) params.budget.set_timeout(*request.timeout_seconds);
-  const Parametrization parametrization =
-      parse_parametrization(request.x, request.y, request.z, request.parameters, params.budget);
+  std::vector<std::string> coordinates = {request.x, request.y};
+  if (request.z) coordinates.push_back(*request.z);
+  const Parametrization parametrization = parse_parametrization(coordinates, request.parameters, params.budget);
   options.groebner = std::move(params);
   return implicitize(parametrization, options);
 }

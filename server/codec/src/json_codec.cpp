@@ -238,7 +238,7 @@ ImplicitizeRequest decode_implicitize_request(std::string_view body, const JsonL
   ImplicitizeRequest request;
   request.x = read_string(reader.require("x"), "x");
   request.y = read_string(reader.require("y"), "y");
-  request.z = read_string(reader.require("z"), "z");
+  if (const auto* v = reader.take("z")) request.z = read_string(*v, "z");
   if (const auto* v = reader.take("parameters")) request.parameters = read_strings(*v, "parameters");
   if (const auto* v = reader.take("method")) request.method = read_string(*v, "method");
   if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = read_timeout_seconds(*v);
@@ -257,6 +257,22 @@ GroebnerRequest decode_groebner_request(std::string_view body, const JsonLimits&
   if (const auto* v = reader.take("eliminate")) request.eliminate = read_strings(*v, "eliminate");
   if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = read_timeout_seconds(*v);
   reader.finish("polynomials, variables, order, weights, eliminate, timeout_ms");
+  return request;
+}
+
+ResultantRequest decode_resultant_request(std::string_view body, const JsonLimits& limits) {
+  const rapidjson::Document document = parse_object(body, limits);
+  ObjectReader reader(document);
+  ResultantRequest request;
+  request.polynomials = read_strings(reader.require("polynomials"), "polynomials");
+  if (request.polynomials.size() != 2) {
+    throw InputError("wrong_number_of_polynomials", "'polynomials' must hold exactly two polynomials, F and G (got " +
+                                                        std::to_string(request.polynomials.size()) + ")")
+        .in_field("polynomials");
+  }
+  request.variable = read_string(reader.require("variable"), "variable");
+  if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = read_timeout_seconds(*v);
+  reader.finish("polynomials, variable, timeout_ms");
   return request;
 }
 
@@ -319,6 +335,27 @@ std::string encode_groebner_response(const GroebnerAnswer& answer) {
     write_key(w, "elimination_ideal");
     write_polynomials(w, *answer.elimination_ideal);
   }
+  w.EndObject();
+  return finish(buffer);
+}
+
+std::string encode_resultant_response(const ResultantAnswer& answer) {
+  rapidjson::StringBuffer buffer;
+  Writer w(buffer);
+  configure(w);
+  w.StartObject();
+  write_key(w, "resultant");
+  write_string(w, to_string(answer.resultant));
+  write_key(w, "variables");
+  w.StartArray();
+  for (const std::string& v : answer.variables) write_string(w, v);
+  w.EndArray();
+  write_key(w, "degree");
+  w.Int(answer.degree);
+  write_key(w, "method");
+  write_string(w, answer.method);
+  write_key(w, "elapsed_ms");
+  write_milliseconds(w, answer.elapsed_ms);
   w.EndObject();
   return finish(buffer);
 }

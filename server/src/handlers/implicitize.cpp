@@ -8,7 +8,11 @@ std::string canonical_key(const ImplicitizeRequest& request) {
   std::string key = "implicitize|";
   append_key_field(key, request.x);
   append_key_field(key, request.y);
-  append_key_field(key, request.z);
+  if (request.z) {
+    append_key_field(key, *request.z);
+  } else {
+    key += '-';  // a plane curve: no field, distinct from every length-prefixed one
+  }
   append_key_field(key, request.method);
   append_key_list(key, request.parameters);
   return key;

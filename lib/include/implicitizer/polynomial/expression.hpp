@@ -46,6 +46,10 @@ std::unique_ptr<Expression> parse_expression(std::string_view text, const ParseL
 /// The identifiers of `e` in order of first appearance.
 std::vector<std::string> collect_identifiers(const Expression& e);
 
+/// The identifiers of all `expressions`, in order of first appearance across them
+/// (the default variables of a request that names none).
+std::vector<std::string> collect_identifiers(const std::vector<std::unique_ptr<Expression>>& expressions);
+
 /// Whether `name` is an identifier of the contract's syntax: [A-Za-z_][A-Za-z0-9_]*
 /// (ASCII, whatever the C locale) of at most `max_length` characters.
 bool is_identifier(std::string_view name, std::size_t max_length = ParseLimits().max_identifier);

@@ -18,10 +18,11 @@ namespace implicitizer {
 struct ImplicitizeRequest {
   std::string x;  ///< expression for x in the parameters
   std::string y;  ///< expression for y
-  std::string z;  ///< expression for z
+  /// Expression for z; absent for a plane curve (then the answer is f(x, y)).
+  std::optional<std::string> z;
   /// Explicit parameter names; absent means "every identifier other than x, y, z".
   std::optional<std::vector<std::string>> parameters;
-  /// `auto`, `groebner`; `resultant` and `interpolation` are refused as not yet built.
+  /// `auto`, `groebner` or `resultant`; `interpolation` is refused as not yet built.
   std::string method = "auto";
   /// Wall-time limit in seconds; absent or <= 0 means none (the caller may impose its own).
   std::optional<double> timeout_seconds;

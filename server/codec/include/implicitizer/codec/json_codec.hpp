@@ -18,6 +18,7 @@
 
 #include "implicitizer/codec/groebner_request.hpp"
 #include "implicitizer/codec/implicitize_request.hpp"
+#include "implicitizer/codec/resultant_request.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 
@@ -41,6 +42,11 @@ ImplicitizeRequest decode_implicitize_request(std::string_view body, const JsonL
 /// decode_implicitize_request().
 GroebnerRequest decode_groebner_request(std::string_view body, const JsonLimits& limits = {});
 
+/// Reads a `POST /v1/resultant` body: `{"polynomials": [F, G], "variable": V,
+/// "timeout_ms": T?}`. Throws InputError as decode_implicitize_request(), and
+/// `wrong_number_of_polynomials` (field "polynomials") unless there are exactly two.
+ResultantRequest decode_resultant_request(std::string_view body, const JsonLimits& limits = {});
+
 /// `{"implicit", "degree", "variables", "method", "verified", "elapsed_ms", "stats":
 /// {"pairs", "product_criterion", "chain_criterion", "reductions", "zero_reductions",
 /// "reduction_steps", "max_degree", "basis_size", "groebner_ms", "verify_ms"},
@@ -51,6 +57,9 @@ std::string encode_implicitize_response(const ImplicitizeResult& result);
 /// "reductions", "zero_reductions", "reduction_steps", "max_degree", "basis_size",
 /// "groebner_ms"}, "elapsed_ms"}`, plus `"elimination_ideal"` when present.
 std::string encode_groebner_response(const GroebnerAnswer& answer);
+
+/// `{"resultant", "variables", "degree", "method", "elapsed_ms"}`.
+std::string encode_resultant_response(const ResultantAnswer& answer);
 
 /// `{"error": {"code", "message", "position"?, "field"?}}`: position when the error
 /// has one, field when it is not empty.
