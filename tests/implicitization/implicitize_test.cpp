@@ -219,6 +219,19 @@ TEST(Implicitize, RandomPatchesByBothRoutes) {
   }
 }
 
+TEST(Implicitize, HugeAndTinyCoefficientsByBothRoutes) {
+  // Coefficients from 10^-30 to 10^30 in one patch: the modular determinant scales
+  // rows to integers and needs more primes, never an approximation.
+  const char* x = "(10^30*s+t+s*t)/(1+s/10^25+t+s*t)";
+  const char* y = "(s*t/10^30+1-s)/(1+s/10^25+t+s*t)";
+  const char* z = "(s-t/10^20+3*s*t)/(1+s/10^25+t+s*t)";
+  const ImplicitizeResult r = by(ImplicitizationMethod::resultant, x, y, z);
+  EXPECT_TRUE(r.verified);
+  EXPECT_EQ(r.degree, 2);
+  EXPECT_GT(r.resultant_stats->determinant.modulus_bits, 200u);
+  EXPECT_EQ(r.implicit, by(ImplicitizationMethod::groebner, x, y, z).implicit);
+}
+
 TEST(Implicitize, BasePointsMakeAutoFallBackAndResultantRefuse) {
   const char* cases[][3] = {
       {"2*s/(1+s^2+t^2)", "2*t/(1+s^2+t^2)", "(s^2+t^2-1)/(1+s^2+t^2)"},  // stereographic sphere
