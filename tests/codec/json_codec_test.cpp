@@ -244,12 +244,16 @@ TEST(AnswerImplicitizeRequest, EncodesTheContractShape) {
   r.y = "s";
   r.z = "t";
   const std::string json = encode_implicitize_response(answer_implicitize_request(r));
-  EXPECT_EQ(json.rfind(R"({"implicit":"x-y-z","degree":1,"variables":["x","y","z"],"method":"resultant",)"
+  // The plane: its 3x3 Macaulay matrix is probed, then Buchberger answers within
+  // its head start (docs/algorithms.md), and the stats say so.
+  EXPECT_EQ(json.rfind(R"({"implicit":"x-y-z","degree":1,"variables":["x","y","z"],"method":"groebner",)"
                        R"("verified":true,"elapsed_ms":)",
                        0),
             0u)
       << json;
-  EXPECT_NE(json.find(R"("resultant":{"dixon_vanishes":true,"macaulay_vanishes":false,"formulation":"macaulay",)"),
+  EXPECT_NE(json.find(R"("route":"groebner: finished within its head start)"), std::string::npos) << json;
+  EXPECT_NE(json.find(R"("resultant":{"dixon_vanishes":true,"macaulay_vanishes":false,"formulation":"macaulay",)"
+                      R"("matrix_size":3,"extraneous_size":0,"degree_bound":1,"construction_ms":)"),
             std::string::npos)
       << json;
   EXPECT_NE(json.find(R"("reproduce":{"singular":")"), std::string::npos);

@@ -328,8 +328,13 @@ Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, c
   options.budget.check_terms(support.flat.size(), "determinant");
   CrtAccumulator crt(support.flat.size());
   PrimeSequence primes = options.primes;
-  const unsigned threads =
-      std::max(1u, options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency()));
+  // A second thread pays only when a prime takes longer than starting one: on a
+  // busy machine a new thread can wait a scheduler tick (about 4 ms, measured), so
+  // below ~3·10⁶ operations per prime (a few ms) the primes run in this thread.
+  const double operations_per_prime =
+      static_cast<double>(support.flat.size()) * static_cast<double>(pencil.size() * pencil.size() * pencil.size()) / 3;
+  const unsigned automatic_threads = operations_per_prime < 3e6 ? 1u : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = std::max(1u, options.threads != 0 ? options.threads : automatic_threads);
 
   std::size_t stable = 0;
   bool done = false;

@@ -50,15 +50,24 @@ struct Candidate {
   std::int32_t degree_bound;
 };
 
+double cube(double n) { return n * n * n; }
+
 }  // namespace
 
-AuxiliaryResultant auxiliary_resultant(const std::array<Polynomial, 4>& input, const RingPtr& space,
-                                       const AuxiliaryResultantOptions& options) {
+double AuxiliaryResultantPlan::predicted_operations() const {
+  if (!formulation) return 0;
+  double points = 1;  // C(D + 3, 3), the lattice
+  for (int i = 1; i <= 3; ++i) points = points * (degree_bound + i) / i;
+  const double primes = minor.empty() ? static_cast<double>(matrix.determinant_coefficient_bits()) / 62 + 1 : 2;
+  return points * (cube(static_cast<double>(matrix.size())) + cube(static_cast<double>(minor.size()))) / 3 * primes;
+}
+
+AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>& input,
+                                                const AuxiliaryResultantOptions& options) {
   const auto start = Clock::now();
-  if (space->num_variables() != 3) throw std::invalid_argument("auxiliary_resultant: the space ring needs x, y, z");
   const std::array<Polynomial, 4> wxyz = integral(input);
-  AuxiliaryResultant result{Polynomial(space), {}};
-  auto& stats = result.stats;
+  AuxiliaryResultantPlan plan;
+  auto& stats = plan.stats;
   for (const auto& p : wxyz) {
     if (p.ring()->num_variables() != 2) throw std::invalid_argument("auxiliary_resultant: two parameters expected");
     stats.bidegree_s = std::max(stats.bidegree_s, p.degree_in(0));
@@ -95,25 +104,43 @@ AuxiliaryResultant auxiliary_resultant(const std::array<Polynomial, 4>& input, c
     }
   }
   if (candidates.empty()) stats.dixon_vanishes = stats.macaulay_vanishes = true;
+  if (chosen) {
+    Candidate& c = candidates[*chosen];
+    plan.formulation = c.formulation;
+    stats.formulation = c.formulation;
+    stats.matrix_size = c.matrix.size();
+    stats.extraneous_size = c.minor.size();
+    stats.degree_bound = c.degree_bound;
+    plan.degree_bound = c.degree_bound;
+    plan.matrix = std::move(c.matrix);
+    plan.minor = std::move(c.minor);
+  }
   stats.construction_ms = ms_since(start);
-  if (!chosen) return result;
+  return plan;
+}
 
-  const Candidate& c = candidates[*chosen];
-  stats.formulation = c.formulation;
-  stats.matrix_size = c.matrix.size();
-  stats.extraneous_size = c.minor.size();
-  stats.degree_bound = c.degree_bound;
+AuxiliaryResultant compute_auxiliary_resultant(const AuxiliaryResultantPlan& plan, const RingPtr& space,
+                                               const AuxiliaryResultantOptions& options) {
+  if (space->num_variables() != 3) throw std::invalid_argument("auxiliary_resultant: the space ring needs x, y, z");
+  AuxiliaryResultant result{Polynomial(space), plan.stats};
+  if (!plan.formulation) return result;
   PencilDeterminantOptions determinant;
-  determinant.degree_bound = c.degree_bound;
-  determinant.divisor_minor = c.minor;
-  if (c.minor.empty()) determinant.proven_bits = c.matrix.determinant_coefficient_bits();
+  determinant.degree_bound = plan.degree_bound;
+  determinant.divisor_minor = plan.minor;
+  if (plan.minor.empty()) determinant.proven_bits = plan.matrix.determinant_coefficient_bits();
   determinant.threads = options.threads;
   determinant.stable_primes = options.stable_primes;
   determinant.budget = options.budget;
   const auto determinant_start = Clock::now();
-  result.resultant = pencil_determinant(c.matrix, space, determinant, &stats.determinant);
-  stats.determinant_ms = ms_since(determinant_start);
+  result.resultant = pencil_determinant(plan.matrix, space, determinant, &result.stats.determinant);
+  result.stats.determinant_ms = ms_since(determinant_start);
   return result;
+}
+
+AuxiliaryResultant auxiliary_resultant(const std::array<Polynomial, 4>& wxyz, const RingPtr& space,
+                                       const AuxiliaryResultantOptions& options) {
+  if (space->num_variables() != 3) throw std::invalid_argument("auxiliary_resultant: the space ring needs x, y, z");
+  return compute_auxiliary_resultant(plan_auxiliary_resultant(wxyz, options), space, options);
 }
 
 }  // namespace implicitizer

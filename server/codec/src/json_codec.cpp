@@ -208,6 +208,10 @@ void write_resultant_stats(Writer& w, const AuxiliaryResultantStats& s, std::int
     w.Uint64(s.extraneous_size);
     write_key(w, "degree_bound");
     w.Int(s.degree_bound);
+  }
+  // The determinant's figures only when it was computed (not when auto's head start
+  // let Buchberger answer first).
+  if (s.determinant.primes > 0) {
     write_key(w, "map_degree");
     w.Int(map_degree);
     write_key(w, "primes");
@@ -300,6 +304,10 @@ std::string encode_implicitize_response(const ImplicitizeResult& result) {
   write_stats_members(w, result.stats);
   write_key(w, "verify_ms");
   write_milliseconds(w, result.verify_ms);
+  if (!result.route.empty()) {
+    write_key(w, "route");
+    write_string(w, result.route);
+  }
   if (result.resultant_stats) {
     write_key(w, "resultant");
     write_resultant_stats(w, *result.resultant_stats, result.map_degree);

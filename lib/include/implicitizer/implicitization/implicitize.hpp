@@ -45,6 +45,7 @@ struct ImplicitizeResult {
   Polynomial implicit{space_ring()};  ///< primitive, positive leading coefficient, in implicit_ring()
   std::int32_t degree = 0;         ///< total degree of `implicit`
   std::string method;              ///< the route used ("groebner" or "resultant")
+  std::string route;               ///< with method auto: why that route (empty otherwise)
   bool verified = false;           ///< substitution into `implicit` gave exactly 0
   double elapsed_ms = 0;           ///< wall time of the whole call
   double verify_ms = 0;            ///< of which spent verifying

@@ -67,7 +67,8 @@ struct PencilDeterminantOptions {
   std::size_t stable_primes = 2;
   /// A size limit: more primes than this throws LimitExceeded (size).
   std::size_t max_primes = 2000;
-  /// Threads for independent primes; 0 means the machine's cores.
+  /// Threads for independent primes; 0 means the machine's cores when a prime costs
+  /// more than ~3·10⁶ operations, else one (starting a thread costs more).
   unsigned threads = 0;
   /// Seeds the evaluation grid (reproducible runs).
   std::uint64_t seed = 0x1234abcd;

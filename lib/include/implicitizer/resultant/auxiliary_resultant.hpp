@@ -9,7 +9,9 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "implicitizer/core/budget.hpp"
 #include "implicitizer/modular/pencil_determinant.hpp"
@@ -58,6 +60,30 @@ struct AuxiliaryResultant {
   Polynomial resultant;          ///< Res_aux in the space ring; zero when there are base points
   AuxiliaryResultantStats stats;
 };
+
+/// The formulation auxiliary_resultant() computes, chosen by the probes, with its
+/// matrix: lets a caller weigh the route (predicted_operations) before paying for it.
+struct AuxiliaryResultantPlan {
+  /// The formulation to compute; none when every one vanishes identically.
+  std::optional<AuxiliaryFormulation> formulation;
+  MatrixPencil matrix{0, 3};          ///< its matrix
+  std::vector<std::size_t> minor;     ///< Macaulay's extraneous minor (empty for Dixon)
+  std::int32_t degree_bound = 0;      ///< the proven bound on deg Res_aux
+  AuxiliaryResultantStats stats;      ///< degrees, probe flags, sizes, construction_ms
+  /// Operations modulo a prime the determinant will take: lattice points × the
+  /// elimination cost of the matrix and the minor × the primes expected (from the
+  /// proven bound for Dixon, two for Macaulay). About 2 ns each on this machine.
+  double predicted_operations() const;
+};
+
+/// Builds both formulations for `wxyz` (as auxiliary_resultant() does), probes them
+/// and keeps the one to compute.
+AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>& wxyz,
+                                                const AuxiliaryResultantOptions& options = {});
+
+/// Computes the determinant `plan` chose, in `space`; zero when it chose none.
+AuxiliaryResultant compute_auxiliary_resultant(const AuxiliaryResultantPlan& plan, const RingPtr& space,
+                                               const AuxiliaryResultantOptions& options = {});
 
 /// Computes Res_aux for `wxyz` = (ω, ξ, η, ζ), polynomials in a ring of exactly two
 /// parameters (s, t) with rational coefficients, in the ring `space` (x, y, z).
