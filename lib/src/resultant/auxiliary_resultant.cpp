@@ -88,11 +88,14 @@ AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>&
     if (candidates[1].degree_bound < candidates[0].degree_bound) std::swap(candidates[0], candidates[1]);
   }
   // Every formulation is probed, even after one is found usable: which of P¹×P¹ and
-  // P² carry base points is worth reporting, and a probe costs one determinant.
+  // P² carry base points is worth reporting, and a probe costs one determinant. One
+  // random point modulo a 62-bit prime suffices: a non-zero polynomial of degree D
+  // vanishes there with probability at most D / 2^62.
   std::optional<std::size_t> chosen;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     options.budget.check("auxiliary resultant");
-    const PencilProbe probe = probe_pencil_determinant(candidates[i].matrix, candidates[i].minor);
+    const PencilProbe probe =
+        probe_pencil_determinant(candidates[i].matrix, candidates[i].minor, /*seed=*/0x5eed, /*trials=*/1);
     if (probe == PencilProbe::nonzero) {
       if (!chosen) chosen = i;
     } else if (candidates[i].formulation == AuxiliaryFormulation::dixon) {
