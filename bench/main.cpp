@@ -3,9 +3,10 @@
 /// (surfaces_public.json, surfaces_hard.json), beside Singular's `eliminate` on the
 /// same ideal, timed in the same run on the same machine.
 ///
-/// Measured on our side: one call of implicitize() with the default options
-/// (Buchberger with sugar and Gebauer–Möller, then exact verification by
-/// substitution), parsing excluded; on Singular's side: `eliminate` alone, timed with
+/// Measured on our side: one call of implicitize() with the route of --method (auto
+/// by default: the auxiliary resultant when the parametrization has no base points,
+/// else Buchberger with sugar and Gebauer–Möller; then exact verification), parsing
+/// excluded; on Singular's side: `eliminate` alone, timed with
 /// `rtimer` inside the Singular process (singular_timer.hpp). Both are wall-clock
 /// times, and a second ratio compares CPU times, which other processes on the
 /// machine disturb less; a run that takes less than --repeat-below seconds is repeated until
@@ -13,6 +14,11 @@
 /// (--budget): a Budget deadline for us, `timeout` for Singular. When both finish,
 /// the answers are compared up to a non-zero rational factor; when Singular gives no
 /// answer, ours is compared with shared/bench/expected/NAME.txt if it exists.
+///
+/// With --routes, each surface is run by every route (groebner, resultant, auto) under
+/// the same repeat and budget policy, beside Singular once, in one table whose last
+/// ratio, auto / min(groebner, resultant), is what auto's choice of route costs
+/// against an oracle that knew the faster route.
 ///
 /// This is not a test: it is not registered with ctest and its exit status only says
 /// whether an answer differed or a run failed (1) or not (0), never how fast it was.
@@ -46,18 +52,26 @@ namespace implicitizer::bench {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: implicitizer-bench [--suite public|hard|all] [--only NAME,NAME...] [--repeat N]\n"
+    "usage: implicitizer-bench [--suite public|hard|all] [--only NAME,NAME...]\n"
+    "                          [--method auto|groebner|resultant | --routes] [--repeat N]\n"
     "                          [--repeat-below SECONDS] [--budget SECONDS] [--markdown]\n"
     "                          [--no-singular] [--singular PATH] [--surfaces DIR]\n"
     "\n"
     "Times implicitize() on the benchmark surfaces and Singular's eliminate on the same\n"
-    "ideal, in the same run. Defaults: --suite all --repeat 5 --repeat-below 1 --budget 60\n"
-    "--singular Singular --surfaces " IMPLICITIZER_BENCH_DIR "\n";
+    "ideal, in the same run. --method picks our route (the column \"method\" shows the one\n"
+    "taken); --routes instead times every route (groebner, resultant, auto) on each\n"
+    "surface beside Singular, with the ratios auto / Singular and auto / min(groebner,\n"
+    "resultant). Defaults: --suite all --method auto --repeat 5 --repeat-below 1\n"
+    "--budget 60 --singular Singular --surfaces " IMPLICITIZER_BENCH_DIR "\n";
 
 /// The command line.
 struct Config {
-  std::string suite = "all";        ///< public, hard or all
-  std::vector<std::string> only;    ///< when non-empty, only these surfaces
+  std::string suite = "all";      ///< public, hard or all
+  std::vector<std::string> only;  ///< when non-empty, only these surfaces
+  /// Our route in the default table.
+  ImplicitizationMethod method = ImplicitizationMethod::automatic;
+  bool method_given = false;        ///< --method was on the command line
+  bool routes = false;              ///< time every route instead (--routes)
   int repeat = 5;                   ///< runs of a fast surface (median reported)
   double repeat_below_seconds = 1;  ///< a first run shorter than this is repeated
   double budget_seconds = 60;       ///< time limit of each run, ours and Singular's
@@ -117,6 +131,16 @@ Config parse_config(int argc, char** argv) {
       }
     } else if (flag == "--only") {
       config.only = split_commas(take_value());
+    } else if (flag == "--method") {
+      const std::string name = take_value();
+      try {
+        config.method = parse_implicitization_method(name);
+      } catch (const InputError& e) {
+        throw UsageError(std::string("--method: ") + e.what());
+      }
+      config.method_given = true;
+    } else if (flag == "--routes") {
+      config.routes = true;
     } else if (flag == "--repeat") {
       const double n = parse_number(flag, take_value());
       if (n != static_cast<int>(n)) throw UsageError("--repeat needs a whole number");
@@ -137,22 +161,42 @@ Config parse_config(int argc, char** argv) {
       throw UsageError("unknown argument '" + flag + "'");
     }
   }
+  // --routes runs every route; a --method beside it would be silently ignored.
+  if (config.routes && config.method_given) throw UsageError("--routes times every route: drop --method");
   return config;
 }
 
 // ---------------------------------------------------------------- measurements
 
-/// Our side of one surface.
+/// Our side of one surface, by one route.
 struct OurRun {
-  enum class Status { ok, time_limit, error };
+  enum class Status {
+    ok,           ///< finished; `result` holds the answer
+    time_limit,   ///< the budget ran out
+    base_points,  ///< the resultant route refused: the auxiliary resultant vanishes
+    error,        ///< anything else (message says what)
+  };
   Status status = Status::error;
   std::vector<double> times_ms;   ///< wall time of each implicitize() call that finished
   std::vector<double> cpu_ms;     ///< CPU time of each of those calls
   std::vector<double> verify_ms;  ///< of which verification (wall), per call
   double stopped_cpu_ms = 0;      ///< for time_limit: CPU time spent before the budget ran out
   ImplicitizeResult result;       ///< of the last call that finished
-  std::string message;            ///< for time_limit and error: what stopped it
+  std::string message;            ///< for time_limit, base_points and error: what stopped it
 };
+
+/// The name --method takes for `method`.
+const char* method_name(ImplicitizationMethod method) {
+  switch (method) {
+    case ImplicitizationMethod::groebner:
+      return "groebner";
+    case ImplicitizationMethod::resultant:
+      return "resultant";
+    case ImplicitizationMethod::automatic:
+      break;
+  }
+  return "auto";
+}
 
 /// The median (mean of the middle two for an even count); precondition: non-empty.
 double median(std::vector<double> values) {
@@ -169,12 +213,15 @@ double process_cpu_ms() {
   return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) / 1e6;
 }
 
-/// Calls implicitize() until `repeat` runs, or once when the first run is slow; each
-/// call gets a fresh budget of `budget_seconds`, so a limit stops one call only.
-OurRun time_implicitize(const Parametrization& p, const Config& config) {
+/// Calls implicitize() by `method` until `repeat` runs, or once when the first run is
+/// slow; each call gets a fresh budget of `budget_seconds`, so a limit stops one call
+/// only. A refusal for base points stops at the first call: it is an answer of the
+/// route, not a failure, and every later call would give it again.
+OurRun time_implicitize(const Parametrization& p, ImplicitizationMethod method, const Config& config) {
   OurRun run;
   for (int k = 0; k < config.repeat; ++k) {
     ImplicitizeOptions options;
+    options.method = method;
     options.groebner.budget = Budget::with_timeout(config.budget_seconds);
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = process_cpu_ms();
@@ -184,6 +231,10 @@ OurRun time_implicitize(const Parametrization& p, const Config& config) {
       run.status = OurRun::Status::time_limit;
       run.message = e.what();
       run.stopped_cpu_ms = process_cpu_ms() - cpu_start;
+      return run;
+    } catch (const NoSingleEquation& e) {
+      run.status = e.code() == "base_points" ? OurRun::Status::base_points : OurRun::Status::error;
+      run.message = e.what();
       return run;
     } catch (const std::exception& e) {
       run.status = OurRun::Status::error;
@@ -223,24 +274,7 @@ std::vector<std::string> read_lines(const std::filesystem::path& file) {
   return lines;
 }
 
-// ---------------------------------------------------------------- one table row
-
-/// Everything printed about one surface.
-struct Row {
-  std::string name;
-  std::string degree;
-  std::string ours;
-  std::string verify = "—";
-  std::string singular;
-  std::string ratio;      ///< of wall times
-  std::string cpu_ratio;  ///< of CPU times: what contention from other processes does not move
-  std::string runs;
-  std::string our_status;
-  std::string singular_status;
-  std::string check;
-  bool meets_target = false;  ///< public target: ≤ 3× Singular's time, or under 5 ms
-  bool failed = false;        ///< an answer differed or a run failed
-};
+// ---------------------------------------------------------------- formatting
 
 std::string format_ms(double ms) {
   char text[32];
@@ -258,9 +292,11 @@ std::string format_ms(double ms) {
   return text;
 }
 
+// Two significant digits below 0.1, so that a route 300× faster than Singular reads
+// 0.0033 rather than 0.00.
 std::string format_ratio(double ratio) {
   char text[32];
-  std::snprintf(text, sizeof text, ratio < 10 ? "%.2f" : "%.0f", ratio);
+  std::snprintf(text, sizeof text, ratio < 0.1 ? "%.2g" : ratio < 10 ? "%.2f" : "%.0f", ratio);
   return text;
 }
 
@@ -270,28 +306,214 @@ std::string format_seconds(double seconds) {
   return s.str();
 }
 
+/// One side of a ratio: a time that finished, or a bound (the run was stopped after
+/// `ms`), or nothing to compare.
+struct RatioTerm {
+  enum class Kind { finished, stopped, unavailable };
+  Kind kind = Kind::unavailable;
+  double ms = 0;
+};
+
+/// "0.22" when both finished; "< x" or "> x" when one side was stopped, so that the
+/// printed number is a bound that holds; "—" otherwise.
+std::string format_ratio_cell(const RatioTerm& numerator, const RatioTerm& denominator) {
+  using Kind = RatioTerm::Kind;
+  if (numerator.kind == Kind::finished && denominator.kind == Kind::finished) {
+    return format_ratio(numerator.ms / denominator.ms);
+  }
+  if (numerator.kind == Kind::finished && denominator.kind == Kind::stopped) {
+    return "< " + format_ratio(numerator.ms / denominator.ms);
+  }
+  if (numerator.kind == Kind::stopped && denominator.kind == Kind::finished) {
+    return "> " + format_ratio(numerator.ms / denominator.ms);
+  }
+  return "—";
+}
+
+/// Our wall time as a ratio term: the median, or the budget when it ran out.
+RatioTerm wall_term(const OurRun& run, const Config& config) {
+  switch (run.status) {
+    case OurRun::Status::ok:
+      return {RatioTerm::Kind::finished, median(run.times_ms)};
+    case OurRun::Status::time_limit:
+      return {RatioTerm::Kind::stopped, config.budget_seconds * 1000};
+    default:
+      return {};
+  }
+}
+
+/// Our CPU time as a ratio term (all threads of the process: the resultant route
+/// computes its primes on every core).
+RatioTerm cpu_term(const OurRun& run) {
+  switch (run.status) {
+    case OurRun::Status::ok:
+      return {RatioTerm::Kind::finished, median(run.cpu_ms)};
+    case OurRun::Status::time_limit:
+      return {RatioTerm::Kind::stopped, run.stopped_cpu_ms};
+    default:
+      return {};
+  }
+}
+
+RatioTerm wall_term(const std::optional<SingularRun>& run, const Config& config) {
+  if (!run) return {};
+  if (run->status == SingularRun::Status::ok) return {RatioTerm::Kind::finished, median(run->times_ms)};
+  if (run->status == SingularRun::Status::timeout) return {RatioTerm::Kind::stopped, config.budget_seconds * 1000};
+  return {};
+}
+
+// Singular's `timer` counts in 10 ms steps: a CPU time is only usable from 100 ms on.
+RatioTerm cpu_term(const std::optional<SingularRun>& run) {
+  if (!run) return {};
+  if (run->status == SingularRun::Status::ok) {
+    const double ms = median(run->cpu_ms);
+    return ms >= 100 ? RatioTerm{RatioTerm::Kind::finished, ms} : RatioTerm{};
+  }
+  if (run->status == SingularRun::Status::timeout && run->process_cpu_ms > 0) {
+    return {RatioTerm::Kind::stopped, run->process_cpu_ms};
+  }
+  return {};
+}
+
+/// Our time as a table cell: the median, "> 60 s", "base points" or "—" (error).
+std::string our_time_cell(const OurRun& run, const Config& config) {
+  switch (run.status) {
+    case OurRun::Status::ok:
+      return format_ms(median(run.times_ms));
+    case OurRun::Status::time_limit:
+      return "> " + format_seconds(config.budget_seconds);
+    case OurRun::Status::base_points:
+      return "base points";
+    case OurRun::Status::error:
+      break;
+  }
+  return "—";
+}
+
+/// Singular's time as a table cell.
+std::string singular_time_cell(const std::optional<SingularRun>& run, const Config& config) {
+  if (!run) return "—";
+  switch (run->status) {
+    case SingularRun::Status::ok:
+      return format_ms(median(run->times_ms));
+    case SingularRun::Status::timeout:
+      return "> " + format_seconds(config.budget_seconds);
+    case SingularRun::Status::error:
+      break;
+  }
+  return "—";
+}
+
+/// Singular's status as a table cell.
+std::string singular_status_cell(const std::optional<SingularRun>& run, const Config& config) {
+  if (!run) return "not run";
+  switch (run->status) {
+    case SingularRun::Status::ok:
+      return "ok";
+    case SingularRun::Status::timeout:
+      return "timeout (" + format_seconds(config.budget_seconds) + ")";
+    case SingularRun::Status::error:
+      break;
+  }
+  return "error: " + run->message;
+}
+
+// ---------------------------------------------------------------- one surface
+
+/// Singular's eliminate on the ideal of `p`, under the same repeat and budget policy
+/// as our side; nullopt when Singular is not run (--no-singular, or not found).
+std::optional<SingularRun> time_singular(const Parametrization& p, const Config& config) {
+  if (!config.singular) return std::nullopt;
+  SingularOptions options;
+  options.executable = config.singular_executable;
+  options.timeout_seconds = config.budget_seconds;
+  options.repeat = config.repeat;
+  options.repeat_below_seconds = config.repeat_below_seconds;
+  return time_singular_eliminate(p, options);
+}
+
+/// The answer check of one surface: our finished answers, Singular's when it
+/// finished, else shared/bench/expected/NAME.txt when it exists. "agree" means
+/// every one of ours is a rational multiple of the reference (and of each other).
+/// "—" when there is nothing to compare with.
+std::string check_answers(const std::vector<const ImplicitizeResult*>& ours, const std::optional<SingularRun>& theirs,
+                          const Surface& surface, const Config& config) {
+  if (ours.empty()) return "—";
+  std::vector<std::string> reference;
+  std::string source;
+  if (theirs && theirs->status == SingularRun::Status::ok) {
+    reference = theirs->generators;
+  } else if (const auto expected = config.surfaces_dir / "expected" / (surface.name + ".txt");
+             std::filesystem::exists(expected)) {
+    reference = read_lines(expected);
+    source = " (expected/)";
+  }
+  if (reference.empty()) {
+    // No outside reference: the routes can still be checked against each other.
+    if (ours.size() < 2) return "—";
+    for (const ImplicitizeResult* r : ours) {
+      if (r->implicit.monic() != ours.front()->implicit.monic()) {
+        return "DIFFER (" + r->method + " vs " + ours.front()->method + ")";
+      }
+    }
+    return "agree (routes only)";
+  }
+  for (const ImplicitizeResult* r : ours) {
+    const std::string verdict = compare_with(r->implicit, reference);
+    if (verdict != "agree") return verdict + (ours.size() > 1 ? " (" + r->method + ")" : "") + source;
+  }
+  return "agree" + source;
+}
+
+/// Everything printed about one surface in the default table.
+struct Row {
+  std::string name;
+  std::string degree;
+  std::string ours;
+  std::string method = "—";  ///< the route our side took
+  std::string verify = "—";
+  std::string singular;
+  std::string ratio;      ///< of wall times
+  std::string cpu_ratio;  ///< of CPU times: what contention from other processes does not move
+  std::string runs;
+  std::string our_status;
+  std::string singular_status;
+  std::string check;
+  bool meets_target = false;  ///< public target: ≤ 3× Singular's time, or under 5 ms
+  bool failed = false;        ///< an answer differed or a run failed
+};
+
+/// Parses the surface's coordinates; nullopt (with the reason in `error`) when they
+/// do not parse, which is a fault of the suite file.
+std::optional<Parametrization> parse_surface(const Surface& surface, std::string& error) {
+  try {
+    return parse_parametrization(surface.x, surface.y, surface.z);
+  } catch (const std::exception& e) {
+    error = std::string("error: ") + e.what();
+    return std::nullopt;
+  }
+}
+
 Row measure_surface(const Surface& surface, const Config& config) {
   Row row;
   row.name = surface.name;
   row.degree = surface.degree > 0 ? std::to_string(surface.degree) : "?";
   const std::string limit = format_seconds(config.budget_seconds);
 
-  std::optional<Parametrization> parsed;
-  try {
-    parsed = parse_parametrization(surface.x, surface.y, surface.z);
-  } catch (const std::exception& e) {
-    row.our_status = std::string("error: ") + e.what();
+  std::string parse_error;
+  const std::optional<Parametrization> parsed = parse_surface(surface, parse_error);
+  if (!parsed) {
+    row.our_status = parse_error;
     row.failed = true;
     return row;
   }
   const Parametrization& p = *parsed;
 
-  const OurRun ours = time_implicitize(p, config);
-  double our_ms = 0;
+  const OurRun ours = time_implicitize(p, config.method, config);
+  row.ours = our_time_cell(ours, config);
   switch (ours.status) {
     case OurRun::Status::ok:
-      our_ms = median(ours.times_ms);
-      row.ours = format_ms(our_ms);
+      row.method = ours.result.method;
       row.verify = format_ms(median(ours.verify_ms));
       row.our_status = "ok";
       if (surface.degree > 0 && ours.result.degree != surface.degree) {
@@ -300,97 +522,148 @@ Row measure_surface(const Surface& surface, const Config& config) {
       }
       break;
     case OurRun::Status::time_limit:
-      row.ours = "> " + limit;
       row.our_status = "time_limit (" + limit + ")";
       break;
+    case OurRun::Status::base_points:
+      // Only --method resultant refuses; that is the route's documented answer.
+      row.our_status = "refused: base_points";
+      break;
     case OurRun::Status::error:
-      row.ours = "—";
       row.our_status = "error: " + ours.message;
       row.failed = true;
       break;
   }
 
-  SingularRun theirs;
-  double their_ms = 0;
-  if (config.singular) {
-    SingularOptions options;
-    options.executable = config.singular_executable;
-    options.timeout_seconds = config.budget_seconds;
-    options.repeat = config.repeat;
-    options.repeat_below_seconds = config.repeat_below_seconds;
-    theirs = time_singular_eliminate(p, options);
-    switch (theirs.status) {
-      case SingularRun::Status::ok:
-        their_ms = median(theirs.times_ms);
-        row.singular = format_ms(their_ms);
-        row.singular_status = "ok";
-        break;
-      case SingularRun::Status::timeout:
-        row.singular = "> " + limit;
-        row.singular_status = "timeout (" + limit + ")";
-        break;
-      case SingularRun::Status::error:
-        row.singular = "—";
-        row.singular_status = "error: " + theirs.message;
-        row.failed = true;
-        break;
-    }
-  } else {
-    row.singular = "—";
-    row.singular_status = "not run";
-  }
+  const std::optional<SingularRun> theirs = time_singular(p, config);
+  row.singular = singular_time_cell(theirs, config);
+  row.singular_status = singular_status_cell(theirs, config);
+  if (theirs && theirs->status == SingularRun::Status::error) row.failed = true;
   row.runs = std::to_string(ours.times_ms.size()) + " / " +
-             (config.singular ? std::to_string(theirs.times_ms.size()) : std::string("—"));
+             (theirs ? std::to_string(theirs->times_ms.size()) : std::string("—"));
 
+  row.ratio = format_ratio_cell(wall_term(ours, config), wall_term(theirs, config));
+  row.cpu_ratio = format_ratio_cell(cpu_term(ours), cpu_term(theirs));
   const bool our_ok = ours.status == OurRun::Status::ok;
-  const bool their_ok = config.singular && theirs.status == SingularRun::Status::ok;
-  const bool their_timeout = config.singular && theirs.status == SingularRun::Status::timeout;
-  if (our_ok && their_ok) {
-    row.ratio = format_ratio(our_ms / their_ms);
-  } else if (our_ok && their_timeout) {
-    row.ratio = "< " + format_ratio(our_ms / (config.budget_seconds * 1000));
-  } else if (ours.status == OurRun::Status::time_limit && their_ok) {
-    row.ratio = "> " + format_ratio(config.budget_seconds * 1000 / their_ms);
-  } else {
-    row.ratio = "—";
-  }
-  // Singular's `timer` counts in 10 ms steps: a CPU ratio needs a run of 100 ms or more.
-  const double their_cpu_ms = their_ok ? median(theirs.cpu_ms) : 0;
-  if (our_ok && their_ok && their_cpu_ms >= 100) {
-    row.cpu_ratio = format_ratio(median(ours.cpu_ms) / their_cpu_ms);
-  } else if (our_ok && their_timeout && theirs.process_cpu_ms > 0) {
-    row.cpu_ratio = "< " + format_ratio(median(ours.cpu_ms) / theirs.process_cpu_ms);
-  } else if (ours.status == OurRun::Status::time_limit && their_ok && their_cpu_ms >= 100) {
-    row.cpu_ratio = "> " + format_ratio(ours.stopped_cpu_ms / their_cpu_ms);
-  } else {
-    row.cpu_ratio = "—";
-  }
-  row.meets_target = our_ok && (our_ms < 5 || (their_ok && our_ms <= 3 * their_ms) || their_timeout);
+  const RatioTerm their_wall = wall_term(theirs, config);
+  const double our_ms = our_ok ? median(ours.times_ms) : 0;
+  row.meets_target =
+      our_ok && (our_ms < 5 || (their_wall.kind == RatioTerm::Kind::finished && our_ms <= 3 * their_wall.ms) ||
+                 their_wall.kind == RatioTerm::Kind::stopped);
 
-  if (our_ok && their_ok) {
-    row.check = compare_with(ours.result.implicit, theirs.generators);
-  } else if (const auto expected = config.surfaces_dir / "expected" / (surface.name + ".txt");
-             our_ok && std::filesystem::exists(expected)) {
-    row.check = compare_with(ours.result.implicit, read_lines(expected)) + " (expected/)";
-  } else {
-    row.check = "—";
-  }
+  row.check = our_ok ? check_answers({&ours.result}, theirs, surface, config) : "—";
   if (row.check.rfind("DIFFER", 0) == 0) row.failed = true;
+  return row;
+}
+
+/// Everything printed about one surface in the --routes table.
+struct RoutesRow {
+  std::string name;
+  std::string degree;
+  std::string groebner;          ///< time of the Gröbner route
+  std::string resultant;         ///< time of the resultant route, or "base points"
+  std::string resultant_matrix;  ///< formulation, matrix size and primes of the resultant route
+  std::string automatic;         ///< time of auto
+  std::string auto_route;        ///< the route auto took
+  std::string singular;
+  std::string auto_vs_singular;      ///< wall times
+  std::string auto_cpu_vs_singular;  ///< CPU times (auto's counts every thread)
+  std::string auto_vs_best;          ///< auto / min(groebner, resultant), wall times
+  std::string runs;                  ///< runs of groebner / resultant / auto / Singular
+  std::string check;
+  bool failed = false;  ///< an answer differed, had the wrong degree, or a run failed
+};
+
+/// "dixon 8×8, 3 primes": how the auxiliary resultant was computed.
+std::string describe_resultant(const AuxiliaryResultantStats& stats) {
+  std::string text = std::string(to_string(stats.formulation)) + " " + std::to_string(stats.matrix_size) + "×" +
+                     std::to_string(stats.matrix_size);
+  const std::size_t primes = stats.determinant.primes;
+  return text + ", " + std::to_string(primes) + (primes == 1 ? " prime" : " primes");
+}
+
+RoutesRow measure_routes(const Surface& surface, const Config& config) {
+  RoutesRow row;
+  row.name = surface.name;
+  row.degree = surface.degree > 0 ? std::to_string(surface.degree) : "?";
+
+  std::string parse_error;
+  const std::optional<Parametrization> parsed = parse_surface(surface, parse_error);
+  if (!parsed) {
+    row.check = parse_error;
+    row.failed = true;
+    return row;
+  }
+  const Parametrization& p = *parsed;
+
+  const OurRun groebner = time_implicitize(p, ImplicitizationMethod::groebner, config);
+  const OurRun resultant = time_implicitize(p, ImplicitizationMethod::resultant, config);
+  const OurRun automatic = time_implicitize(p, ImplicitizationMethod::automatic, config);
+  const std::optional<SingularRun> theirs = time_singular(p, config);
+
+  row.groebner = our_time_cell(groebner, config);
+  row.resultant = our_time_cell(resultant, config);
+  row.resultant_matrix = resultant.status == OurRun::Status::ok && resultant.result.resultant_stats
+                             ? describe_resultant(*resultant.result.resultant_stats)
+                             : "—";
+  row.automatic = our_time_cell(automatic, config);
+  row.auto_route = automatic.status == OurRun::Status::ok ? automatic.result.method : "—";
+  row.singular = singular_time_cell(theirs, config);
+
+  row.auto_vs_singular = format_ratio_cell(wall_term(automatic, config), wall_term(theirs, config));
+  row.auto_cpu_vs_singular = format_ratio_cell(cpu_term(automatic), cpu_term(theirs));
+  // The oracle's time: the faster route that finished; when neither did, the
+  // budget is a lower bound for it only if one was stopped by it.
+  RatioTerm best;
+  for (const OurRun* route : {&groebner, &resultant}) {
+    const RatioTerm term = wall_term(*route, config);
+    if (term.kind == RatioTerm::Kind::finished && (best.kind != RatioTerm::Kind::finished || term.ms < best.ms)) {
+      best = term;
+    } else if (term.kind == RatioTerm::Kind::stopped && best.kind == RatioTerm::Kind::unavailable) {
+      best = term;
+    }
+  }
+  row.auto_vs_best = format_ratio_cell(wall_term(automatic, config), best);
+  row.runs = std::to_string(groebner.times_ms.size()) + " / " + std::to_string(resultant.times_ms.size()) + " / " +
+             std::to_string(automatic.times_ms.size()) + " / " +
+             (theirs ? std::to_string(theirs->times_ms.size()) : std::string("—"));
+
+  std::vector<const ImplicitizeResult*> answers;
+  std::string problems;
+  for (const OurRun* route : {&groebner, &resultant, &automatic}) {
+    if (route->status == OurRun::Status::ok) {
+      answers.push_back(&route->result);
+      if (surface.degree > 0 && route->result.degree != surface.degree) {
+        problems += "; " + route->result.method + " has degree " + std::to_string(route->result.degree);
+      }
+    } else if (route->status == OurRun::Status::error) {
+      problems += "; error: " + route->message;
+    }
+  }
+  // Base points are the resultant route's answer; for Gröbner or auto they would be a bug.
+  if (groebner.status == OurRun::Status::base_points || automatic.status == OurRun::Status::base_points) {
+    problems += "; base_points outside the resultant route";
+  }
+  if (theirs && theirs->status == SingularRun::Status::error) problems += "; Singular: " + theirs->message;
+  row.check = check_answers(answers, theirs, surface, config) + problems;
+  row.failed = !problems.empty() || row.check.rfind("DIFFER", 0) == 0;
   return row;
 }
 
 // ---------------------------------------------------------------- printing
 
-/// The columns, in order: header (Markdown), header (text), width (text).
+/// A column: header (Markdown), header (text), width (text).
 struct Column {
   const char* markdown;
   const char* text;
   std::size_t width;
 };
+
+/// The default table: our route of --method beside Singular.
 const std::vector<Column> kColumns = {
     {"surface", "surface", 22},
     {"degree", "degree", 6},
     {"ours", "ours", 9},
+    {"method", "method", 9},
     {"Singular", "Singular", 9},
     {"ours / Singular", "ratio", 7},
     {"CPU ours / Singular", "CPU ratio", 9},
@@ -402,8 +675,31 @@ const std::vector<Column> kColumns = {
 };
 
 std::vector<std::string> cells_of(const Row& row) {
-  return {row.name,   row.degree, row.ours,       row.singular,        row.ratio, row.cpu_ratio,
-          row.verify, row.runs,   row.our_status, row.singular_status, row.check};
+  return {row.name,      row.degree, row.ours, row.method,     row.singular,        row.ratio,
+          row.cpu_ratio, row.verify, row.runs, row.our_status, row.singular_status, row.check};
+}
+
+/// The --routes table: every route of ours beside Singular.
+const std::vector<Column> kRoutesColumns = {
+    {"surface", "surface", 22},
+    {"degree", "degree", 6},
+    {"groebner", "groebner", 11},
+    {"resultant", "resultant", 11},
+    {"resultant matrix", "matrix", 24},
+    {"auto", "auto", 9},
+    {"auto took", "auto took", 9},
+    {"Singular", "Singular", 9},
+    {"auto / Singular", "auto/Sing", 9},
+    {"CPU auto / Singular", "CPU a/S", 7},
+    {"auto / best route", "auto/best", 9},
+    {"runs (g / r / a / S)", "runs g/r/a/S", 12},
+    {"answers", "answers", 10},
+};
+
+std::vector<std::string> cells_of(const RoutesRow& row) {
+  return {row.name,         row.degree,     row.groebner, row.resultant,        row.resultant_matrix,
+          row.automatic,    row.auto_route, row.singular, row.auto_vs_singular, row.auto_cpu_vs_singular,
+          row.auto_vs_best, row.runs,       row.check};
 }
 
 // Columns count characters, not bytes: "µs" and "—" are several bytes in UTF-8.
@@ -412,15 +708,15 @@ std::size_t display_width(const std::string& text) {
       std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
 }
 
-void print_cells(const std::vector<std::string>& cells, bool markdown) {
+void print_cells(const std::vector<std::string>& cells, const std::vector<Column>& columns, bool markdown) {
   std::string line;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     if (markdown) {
       line += "| " + cells[i] + " ";
     } else {
       std::string cell = cells[i];
-      if (const std::size_t width = display_width(cell); width < kColumns[i].width)
-        cell.append(kColumns[i].width - width, ' ');
+      if (const std::size_t width = display_width(cell); width < columns[i].width)
+        cell.append(columns[i].width - width, ' ');
       line += (i ? "  " : "") + cell;
     }
   }
@@ -429,12 +725,12 @@ void print_cells(const std::vector<std::string>& cells, bool markdown) {
   std::cout << line << '\n' << std::flush;
 }
 
-void print_table_header(const std::string& suite, bool markdown) {
+void print_table_header(const std::string& suite, const std::vector<Column>& columns, bool markdown) {
   std::cout << '\n' << (markdown ? "### " : "== ") << suite << " surfaces" << (markdown ? "\n\n" : "\n");
   std::vector<std::string> header;
-  for (const Column& column : kColumns) header.emplace_back(markdown ? column.markdown : column.text);
-  print_cells(header, markdown);
-  if (markdown) print_cells(std::vector<std::string>(kColumns.size(), "---"), true);
+  for (const Column& column : columns) header.emplace_back(markdown ? column.markdown : column.text);
+  print_cells(header, columns, markdown);
+  if (markdown) print_cells(std::vector<std::string>(columns.size(), "---"), columns, true);
 }
 
 std::string read_cpu_model() {
@@ -483,7 +779,11 @@ int run(const Config& config) {
             << bullet << "Singular: " << singular_line << '\n'
             << bullet << "budget " << format_seconds(config.budget_seconds) << " per run (ours and Singular's); "
             << "runs under " << format_seconds(config.repeat_below_seconds) << " repeated " << config.repeat
-            << " times, median shown\n";
+            << " times, median shown\n"
+            << bullet
+            << (config.routes ? std::string("ours: every route (groebner, resultant, auto), each under that policy")
+                              : "ours: --method " + std::string(method_name(config.method)))
+            << '\n';
 
   std::string suite;
   int public_count = 0;
@@ -493,11 +793,17 @@ int run(const Config& config) {
     const Surface& s = surfaces[i];
     if (s.suite != suite) {
       suite = s.suite;
-      print_table_header(suite, config.markdown);
+      print_table_header(suite, config.routes ? kRoutesColumns : kColumns, config.markdown);
     }
     std::cerr << "[" << i + 1 << "/" << surfaces.size() << "] " << s.name << "\n";
+    if (config.routes) {
+      const RoutesRow row = measure_routes(s, effective);
+      print_cells(cells_of(row), kRoutesColumns, config.markdown);
+      failed = failed || row.failed;
+      continue;  // the public target is about the default route, which --routes reports as "auto"
+    }
     const Row row = measure_surface(s, effective);
-    print_cells(cells_of(row), config.markdown);
+    print_cells(cells_of(row), kColumns, config.markdown);
     failed = failed || row.failed;
     if (s.suite == "public") {
       ++public_count;
