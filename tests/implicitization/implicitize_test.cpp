@@ -329,6 +329,31 @@ TEST(Implicitize, PlaneParametrizationsThatAreNotCurves) {
   EXPECT_THROW(parse_parametrization(std::vector<std::string>{"t"}), std::invalid_argument);
 }
 
+TEST(Implicitize, ResultantMatricesHaveASizeLimit) {
+  // Total degree 12: Macaulay's matrix would have C(36, 2) = 630 rows, over the
+  // limit, and the bidegree-(12,12) Dixon matrix vanishes (base points on P1xP1).
+  // resultant says which limit stopped it; auto goes to Buchberger.
+  const char* x = "s^12+t";
+  const char* y = "t^12+s";
+  const char* z = "s*t";
+  try {
+    by(ImplicitizationMethod::resultant, x, y, z);
+    FAIL() << "no size limit";
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit(), Limit::size);
+    EXPECT_NE(std::string(e.what()).find("rows"), std::string::npos);
+  }
+  ImplicitizeOptions options;
+  options.groebner.budget.set_timeout(0.2);
+  try {
+    const ImplicitizeResult r = implicitize(parse_parametrization(x, y, z), options);
+    EXPECT_EQ(r.method, "groebner");
+    EXPECT_TRUE(r.resultant_stats->matrix_too_large);
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit(), Limit::time);  // Buchberger may need longer: the budget says so
+  }
+}
+
 TEST(Implicitize, ResultantNeedsTwoParameters) {
   try {
     by(ImplicitizationMethod::resultant, "s", "t", "u");

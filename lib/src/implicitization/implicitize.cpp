@@ -237,6 +237,11 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
                            " coordinates (this has " + std::to_string(parameters) + ")");
     }
     auto result = by_resultant(p, budget, probe);
+    if (!result && probe && probe->matrix_too_large && !(probe->dixon_vanishes && probe->macaulay_vanishes)) {
+      throw LimitExceeded(Limit::size, "the auxiliary resultant's matrix would exceed " +
+                                           std::to_string(kMaxResultantMatrixSize) +
+                                           " rows for this degree; use method groebner or auto");
+    }
     if (!result && coordinates == 2) {
       throw NoSingleEquation("no implicit curve: the image is a point", {});
     }

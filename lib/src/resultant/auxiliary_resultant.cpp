@@ -81,11 +81,23 @@ AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>&
   // both resultants vanish, which the caller reports.
   std::vector<Candidate> candidates;
   if (m >= 1 && n >= 1) {
-    candidates.push_back({AuxiliaryFormulation::dixon, dixon_pencil(wxyz, m, n), {}, 2 * m * n});
-    MacaulayPencil macaulay = macaulay_pencil(wxyz, d);
-    candidates.push_back({AuxiliaryFormulation::macaulay, std::move(macaulay.matrix), std::move(macaulay.extraneous),
-                          d * d});
-    if (candidates[1].degree_bound < candidates[0].degree_bound) std::swap(candidates[0], candidates[1]);
+    const auto dixon_size = static_cast<std::size_t>(2 * m * n);
+    const auto macaulay_size = static_cast<std::size_t>((3 * d - 1) * 3 * d / 2);  // C(3d, 2)
+    if (dixon_size <= kMaxResultantMatrixSize) {
+      candidates.push_back({AuxiliaryFormulation::dixon, dixon_pencil(wxyz, m, n), {}, 2 * m * n});
+    } else {
+      stats.matrix_too_large = true;
+    }
+    if (macaulay_size <= kMaxResultantMatrixSize) {
+      MacaulayPencil macaulay = macaulay_pencil(wxyz, d);
+      candidates.push_back({AuxiliaryFormulation::macaulay, std::move(macaulay.matrix),
+                            std::move(macaulay.extraneous), d * d});
+    } else {
+      stats.matrix_too_large = true;
+    }
+    if (candidates.size() == 2 && candidates[1].degree_bound < candidates[0].degree_bound) {
+      std::swap(candidates[0], candidates[1]);
+    }
   }
   // Every formulation is probed, even after one is found usable: which of P¹×P¹ and
   // P² carry base points is worth reporting, and a probe costs one determinant. One
@@ -106,7 +118,7 @@ AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>&
       stats.macaulay_vanishes = true;
     }
   }
-  if (candidates.empty()) stats.dixon_vanishes = stats.macaulay_vanishes = true;
+  if (candidates.empty() && !stats.matrix_too_large) stats.dixon_vanishes = stats.macaulay_vanishes = true;
   if (chosen) {
     Candidate& c = candidates[*chosen];
     plan.formulation = c.formulation;

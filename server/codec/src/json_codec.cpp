@@ -199,6 +199,10 @@ void write_resultant_stats(Writer& w, const AuxiliaryResultantStats& s, std::int
   w.Bool(s.dixon_vanishes);
   write_key(w, "macaulay_vanishes");
   w.Bool(s.macaulay_vanishes);
+  if (s.matrix_too_large) {
+    write_key(w, "matrix_too_large");
+    w.Bool(true);
+  }
   if (s.matrix_size > 0) {
     write_key(w, "formulation");
     write_string(w, to_string(s.formulation));

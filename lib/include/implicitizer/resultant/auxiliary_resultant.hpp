@@ -19,6 +19,11 @@
 
 namespace implicitizer {
 
+/// The largest matrix a formulation may build (rows): Macaulay's for total degree 11
+/// (528 rows would be degree 11) is the last below it. Beyond it the matrices take
+/// seconds to probe and hundreds of MB to hold, and Buchberger is the route.
+inline constexpr std::size_t kMaxResultantMatrixSize = 500;
+
 /// Which matrix formulation computed the resultant.
 enum class AuxiliaryFormulation {
   dixon,     ///< tensor product, bidegree (m, n): Dixon's 2mn × 2mn matrix, degree bound 2mn
@@ -50,6 +55,9 @@ struct AuxiliaryResultantStats {
   std::int32_t degree_bound = 0;      ///< the proven bound on deg Res_aux
   bool dixon_vanishes = false;        ///< Dixon's determinant is identically zero: base points on P¹×P¹
   bool macaulay_vanishes = false;     ///< Macaulay's quotient is identically zero: base points on P²
+  /// A formulation was skipped because its matrix would exceed kMaxResultantMatrixSize
+  /// rows (its vanishing flag is then false: it was not probed).
+  bool matrix_too_large = false;
   PencilDeterminantStats determinant; ///< primes, evaluations
   double construction_ms = 0;         ///< building the matrix and probing
   double determinant_ms = 0;          ///< evaluation, interpolation, Chinese remaindering
