@@ -10,6 +10,7 @@ commands:
   implicitize   the implicit equation of a parametrized surface
   groebner      the reduced Groebner basis of an ideal (or an elimination ideal)
   resultant     the resultant of two polynomials with respect to one variable
+  sdf           a GLSL distance estimate of the surface F(x,y,z) = 0
   help [CMD]    this text, or the help of one command
   --version     the version
 
@@ -18,6 +19,7 @@ commands:
   implicitizer groebner [--vars x,y,z] [--order lex|grlex|grevlex] [--weights 1,2,3]
                [--eliminate s,t] [--timeout SECONDS] [--json] F [F ...]
   implicitizer resultant --var t [--timeout SECONDS] [--max-terms N] [--json] F G
+  implicitizer sdf --implicit E [--mode fast] [--box x0,y0,z0,x1,y1,z1] [--name NAME] [--json]
   implicitize and groebner also take --strategy auto|normal|sugar,
   --criteria gm|seed|product|none, --max-terms N
 
@@ -108,6 +110,29 @@ A polynomial may start with '-': only words starting with '--' are options ('--'
 ends them).
 exit status: 0 success, 2 usage error, 3 invalid input (parse error, unknown
 variable), 5 time or size limit.
+)";
+
+const char* const kSdfHelp = R"(usage: implicitizer sdf --implicit E [OPTIONS]
+
+Prints GLSL source defining float NAME_sdf(vec3 p): a distance estimate of the
+surface E = 0, negative where E < 0, evaluated in fp32 in a frame centred and scaled
+to the scene box (docs/sdf.md). It compiles as GLSL ES 3.00 and as GLSL 330.
+
+options:
+  --implicit E          the polynomial F(x, y, z) (required; only x, y, z may occur)
+  --mode fast           F/|grad F|, first order, not a bound (default; the only mode
+                        built: safe is a usage error until it is)
+  --box x0,y0,z0,x1,y1,z1
+                        the scene box, exact numbers (default -2,-2,-2,2,2,2)
+  --name NAME           function NAME_sdf (default surface): [A-Za-z_][A-Za-z0-9_]*,
+                        at most 64 characters, no gl_ prefix, no __, no trailing _,
+                        not a GLSL keyword
+  --json                print the JSON object POST /v1/sdf returns
+  -h, --help            this text
+
+--scene is not built yet (usage error).
+exit status: 0 success, 2 usage error, 3 invalid input (parse error, unknown
+variable, constant polynomial, invalid_box, invalid_name).
 )";
 
 }  // namespace implicitizer::cli

@@ -13,5 +13,7 @@ extern const char* const kImplicitizeHelp;
 extern const char* const kGroebnerHelp;
 /// `implicitizer resultant --help`.
 extern const char* const kResultantHelp;
+/// `implicitizer sdf --help`.
+extern const char* const kSdfHelp;
 
 }  // namespace implicitizer::cli

@@ -13,6 +13,7 @@
 #include "help.hpp"
 #include "implicitize_command.hpp"
 #include "resultant_command.hpp"
+#include "sdf_command.hpp"
 
 namespace {
 
@@ -28,6 +29,7 @@ int run(const std::vector<std::string>& words) {
   if (command == "implicitize") return run_implicitize_command(rest);
   if (command == "groebner") return run_groebner_command(rest);
   if (command == "resultant") return run_resultant_command(rest);
+  if (command == "sdf") return run_sdf_command(rest);
   if (command == "--version" || command == "version") {
     std::cout << "implicitizer " << IMPLICITIZER_VERSION << '\n';
     return kExitOk;
@@ -41,12 +43,14 @@ int run(const std::vector<std::string>& words) {
       std::cout << kGroebnerHelp;
     } else if (rest.front() == "resultant") {
       std::cout << kResultantHelp;
+    } else if (rest.front() == "sdf") {
+      std::cout << kSdfHelp;
     } else {
       return report_usage_error("no help for unknown command '" + rest.front() + "'", nullptr);
     }
     return kExitOk;
   }
-  if (command == "sdf" || command == "render") {
+  if (command == "render") {
     return report_usage_error("the command '" + command + "' is not built yet", nullptr);
   }
   return report_usage_error("unknown command '" + command + "'", nullptr);

@@ -252,5 +252,27 @@ if [[ $(status) == 0 ]] && grep -q -- "--criteria" "$WORK/out"; then pass; else 
 run --version
 if [[ $(status) == 0 ]] && grep -Eq "^implicitizer [0-9]+\.[0-9]+\.[0-9]+$" "$WORK/out"; then pass; else fail "--version"; fi
 
+# sdf (docs/sdf.md): GLSL of NAME_sdf, JSON of POST /v1/sdf, refusals.
+run sdf --implicit "x^2+y^2+z^2-1" --name ball
+if [[ $(status) == 0 ]] && grep -q "^float ball_sdf(vec3 p) {" "$WORK/out" && ! grep -q pow "$WORK/out"; then pass; else
+  fail "sdf prints float ball_sdf(vec3 p) without pow"
+fi
+expect_json "sdf json" 0 'j["function"] == "surface_sdf" and j["mode"] == "fast" and j["degree"] == 2 and j["box"] == [-2, -2, -2, 2, 2, 2] and "float surface_sdf(vec3 p)" in j["glsl"]' \
+  sdf --implicit "x^2+y^2+z^2-1" --json
+expect_json "sdf json box" 0 'j["box"] == [0, 0, 0, 1e-6, 1e-6, 1e-6]' sdf --implicit "x-1e-7" --box 0,0,0,1e-6,1e-6,1e-6 --json
+expect_status "sdf safe not built" 2 "not built yet" sdf --implicit "x" --mode safe
+expect_status "sdf scene not built" 2 "not built yet" sdf --scene scene.json
+expect_status "sdf unknown mode" 2 "unknown --mode" sdf --implicit "x" --mode exact
+expect_status "sdf missing implicit" 2 "missing --implicit" sdf
+expect_status "sdf injected name" 3 "invalid_name" sdf --implicit "x" --name "a(){}; void b"
+expect_status "sdf gl_ name" 3 "invalid_name" sdf --implicit "x" --name gl_X
+expect_status "sdf keyword name" 3 "invalid_name" sdf --implicit "x" --name float
+expect_status "sdf empty box" 3 "invalid_box" sdf --implicit "x" --box 1,0,0,1,1,1
+expect_status "sdf short box" 3 "invalid_box" sdf --implicit "x" --box 1,2
+expect_status "sdf unknown variable" 3 "unknown_variable" sdf --implicit "x+t"
+expect_status "sdf constant" 3 "constant_polynomial" sdf --implicit "3"
+expect_json "sdf json error" 3 'j["error"]["code"] == "invalid_name" and j["error"]["field"] == "name"' \
+  sdf --implicit "x" --name "1a" --json
+
 echo "$passed passed, $failed failed"
 [[ $failed == 0 ]]

@@ -372,6 +372,30 @@ std::string encode_resultant_response(const ResultantAnswer& answer) {
   return finish(buffer);
 }
 
+std::string encode_sdf_response(const SdfAnswer& answer) {
+  rapidjson::StringBuffer buffer;
+  Writer w(buffer);
+  configure(w);
+  w.StartObject();
+  write_key(w, "glsl");
+  write_string(w, answer.glsl);
+  write_key(w, "function");
+  write_string(w, answer.function);
+  write_key(w, "mode");
+  write_string(w, answer.mode);
+  write_key(w, "box");
+  // Full precision here (a box may be 1e-6 wide), not the 3 decimals of times.
+  w.SetMaxDecimalPlaces(Writer::kDefaultMaxDecimalPlaces);
+  w.StartArray();
+  for (double b : answer.box) w.Double(b);
+  w.EndArray();
+  configure(w);
+  write_key(w, "degree");
+  w.Int(answer.degree);
+  w.EndObject();
+  return finish(buffer);
+}
+
 namespace {
 
 // The contract's error shape: {"error": {"code", "message", ...extra members}}.

@@ -19,6 +19,7 @@
 #include "implicitizer/codec/groebner_request.hpp"
 #include "implicitizer/codec/implicitize_request.hpp"
 #include "implicitizer/codec/resultant_request.hpp"
+#include "implicitizer/codec/sdf_request.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 
@@ -60,6 +61,10 @@ std::string encode_groebner_response(const GroebnerAnswer& answer);
 
 /// `{"resultant", "variables", "degree", "method", "elapsed_ms"}`.
 std::string encode_resultant_response(const ResultantAnswer& answer);
+
+/// `{"glsl", "function", "mode", "box": [x0, y0, z0, x1, y1, z1], "degree"}`: the
+/// answer of `POST /v1/sdf` (and `implicitizer sdf --json`).
+std::string encode_sdf_response(const SdfAnswer& answer);
 
 /// `{"error": {"code", "message", "position"?, "field"?}}`: position when the error
 /// has one, field when it is not empty.

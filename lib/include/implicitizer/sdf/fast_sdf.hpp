@@ -1,0 +1,100 @@
+#pragma once
+/// \file
+/// Mode `fast`: the first-order distance estimate F/|∇F| of the surface F = 0,
+/// evaluated in the scene frame (scene_frame.hpp) with the gradient from the same
+/// Horner pass (polynomial_program.hpp). One object holds the rounded constants and
+/// the program; it prints the GLSL function and evaluates the same steps in C++.
+///
+/// Mathematics (docs/sdf.md): with p = c + u/s and G(u) = F(p)/M,
+/// ∇_p F = M·s·∇_u G, so F/|∇_p F| = (G/|∇_u G|)/s: the estimate is computed in
+/// u-space and multiplied by h = 1/s. It is invariant under scaling F, so the
+/// normalisation by M changes nothing. It is the distance to the zero set of F's
+/// linearisation at p: exact for planes, first-order accurate near a regular part
+/// of the surface, neither a lower nor an upper bound in general (it overshoots
+/// where the surface curves towards p, and grows without bound near a point where
+/// ∇F = 0 off the surface). Where |∇_u G| < kGradientFloor the estimate divides by
+/// the floor instead: smaller in magnitude, never inf or NaN, but where the
+/// surface is singular (∇F = 0 on it) it is not a distance at all.
+///
+/// Far from the box (max |u_i| > kFarField) the function returns h times the
+/// distance from u to the cube [-1, 1]^3, a lower bound of the distance to the part
+/// of the surface inside the box: sphere tracing walks to the box, and the
+/// polynomial is only evaluated where |u_i| <= 2, so |u|^18 <= 2.6e5 cannot
+/// overflow fp32.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "implicitizer/polynomial/polynomial.hpp"
+#include "implicitizer/sdf/polynomial_program.hpp"
+#include "implicitizer/sdf/scene_frame.hpp"
+
+namespace implicitizer {
+
+/// A compiled fast-mode distance estimate.
+class FastSdf {
+ public:
+  /// Below this |∇_u G| the estimate divides by it instead. The coefficients of G
+  /// are at most 1, so |∇_u G| is of order 1 on regular parts of the surface; below
+  /// 1e-6 the fp32 gradient is dominated by rounding (terms of size up to ~1
+  /// cancelling with relative error ~1e-7 each), so its length is noise anyway.
+  static constexpr double kGradientFloor = 1e-6;
+  /// Beyond this max-norm of u the box distance is returned (see the file comment).
+  static constexpr double kFarField = 2;
+
+  /// Frames `f` (three variables x, y, z in ring order) in `box` and compiles it.
+  /// Throws InputError `constant_polynomial` (no surface), `invalid_box`.
+  static FastSdf build(const Polynomial& f, const SceneBox& box);
+
+  /// The estimate at p = (x, y, z), computed exactly as the GLSL does (float) or in
+  /// double with the double-rounded constants. Negative where F < 0.
+  template <typename T>
+  T evaluate(T x, T y, T z) const {
+    const T s = pick<T>(scale_, scale_float_);
+    const T h = pick<T>(half_extent_, half_extent_float_);
+    const T u = (x - pick<T>(centre_[0], centre_float_[0])) * s;
+    const T v = (y - pick<T>(centre_[1], centre_float_[1])) * s;
+    const T w = (z - pick<T>(centre_[2], centre_float_[2])) * s;
+    const T one(1), zero(0), far(kFarField);
+    if (std::max(std::abs(u), std::max(std::abs(v), std::abs(w))) > far) {
+      const T du = std::max(std::abs(u) - one, zero);
+      const T dv = std::max(std::abs(v) - one, zero);
+      const T dw = std::max(std::abs(w) - one, zero);
+      return std::sqrt(du * du + dv * dv + dw * dw) * h;
+    }
+    const ValueAndGradient<T> r = program_.evaluate(u, v, w);
+    const auto& d = r.gradient;
+    const T length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    return r.value / std::max(length, T(kGradientFloor)) * h;
+  }
+
+  /// `float FUNCTION(vec3 p) { ... }` with a comment line above it. Precondition:
+  /// `function` is a valid GLSL identifier (check_glsl_name on its prefix).
+  std::string to_glsl(const std::string& function) const;
+
+  /// The frame (exact, float-representable centre and scale).
+  const SceneFrame& frame() const { return frame_; }
+  /// The compiled G.
+  const PolynomialProgram& program() const { return program_; }
+
+ private:
+  template <typename T>
+  static T pick(double d, float f) {
+    if constexpr (sizeof(T) == sizeof(float)) {
+      return f;
+    } else {
+      return static_cast<T>(d);
+    }
+  }
+
+  SceneFrame frame_;
+  PolynomialProgram program_;
+  std::array<double, 3> centre_{};
+  std::array<float, 3> centre_float_{};
+  double scale_ = 1, half_extent_ = 1;
+  float scale_float_ = 1, half_extent_float_ = 1;
+};
+
+}  // namespace implicitizer

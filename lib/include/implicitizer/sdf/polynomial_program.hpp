@@ -1,0 +1,131 @@
+#pragma once
+/// \file
+/// A straight-line program that evaluates a trivariate polynomial G(u, v, w) and
+/// its gradient together, in one pass, with two back ends that run the same steps
+/// in the same order: GLSL source text (to_glsl) and a C++ evaluator in float or
+/// double (evaluate). Tests compare the C++ float run with exact arithmetic, and so
+/// learn what the GPU computes, up to the GPU's own freedoms (it may fuse a·b + c
+/// into one fma, which only removes a rounding).
+///
+/// Shape: nested Horner, G = Σ_i u^i (Σ_j v^j (Σ_k c_ijk w^k)), each level
+/// carrying forward-mode partial derivatives: for y = y·x + a, the derivative in
+/// x is y' = y'·x + y (taken before y changes), and in the other variables
+/// y'_v = y'_v·x + a'_v. No pow anywhere (GLSL's pow(x, y) is undefined for x < 0
+/// and costs exp and log); about 2 multiply-adds per coefficient for the value and
+/// w-derivative, 3 per inner polynomial and 4 per outer level for the rest.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "implicitizer/polynomial/polynomial.hpp"
+
+namespace implicitizer {
+
+/// The program's registers. u, v, w are the inputs; a, aw hold the innermost
+/// polynomial in w and its w-derivative; b, bv, bw the middle one in v; g, gu, gv,
+/// gw the value and gradient of G.
+enum class ProgramRegister : std::uint8_t { u, v, w, a, aw, b, bv, bw, g, gu, gv, gw };
+
+/// Number of registers.
+inline constexpr std::size_t kProgramRegisters = 12;
+
+/// One step. Every step writes `target`:
+///   load_constant:  target = constant
+///   copy:           target = source
+///   multiply:       target = target · by
+///   multiply_add:   target = target · by + source
+///   multiply_add_constant: target = target · by + constant
+struct ProgramStep {
+  enum class Kind : std::uint8_t { load_constant, copy, multiply, multiply_add, multiply_add_constant };
+  Kind kind;
+  ProgramRegister target;
+  ProgramRegister by = ProgramRegister::u;      ///< the multiplier (multiply*)
+  ProgramRegister source = ProgramRegister::u;  ///< copy and multiply_add
+  double constant = 0;  ///< the coefficient, rounded to double, then (float runs) to float
+  float constant_float = 0;  ///< float(constant): what the GLSL states
+};
+
+/// The value of G and its partial derivatives.
+template <typename T>
+struct ValueAndGradient {
+  T value;                    ///< G(u, v, w)
+  std::array<T, 3> gradient;  ///< (∂G/∂u, ∂G/∂v, ∂G/∂w)
+};
+
+/// A compiled polynomial.
+class PolynomialProgram {
+ public:
+  /// Compiles `g`, a polynomial of a ring with exactly three variables (u, v, w in
+  /// ring order), whose coefficients should be at most 1 in magnitude (see
+  /// frame_polynomial). Coefficients are rounded to float; those that become
+  /// subnormal or 0 (below 1.2e-38 in magnitude) are dropped, as GPUs flush
+  /// subnormals. Precondition: g is not zero.
+  static PolynomialProgram compile(const Polynomial& g);
+
+  /// The steps, in execution order.
+  const std::vector<ProgramStep>& steps() const { return steps_; }
+  /// Total degree of the compiled polynomial.
+  std::int32_t degree() const { return degree_; }
+
+  /// Runs the steps in T (float or double). Float runs use constant_float, double
+  /// runs constant.
+  template <typename T>
+  ValueAndGradient<T> evaluate(T u, T v, T w) const {
+    std::array<T, kProgramRegisters> r{};
+    r[index(ProgramRegister::u)] = u;
+    r[index(ProgramRegister::v)] = v;
+    r[index(ProgramRegister::w)] = w;
+    for (const ProgramStep& s : steps_) {
+      T& t = r[index(s.target)];
+      switch (s.kind) {
+        case ProgramStep::Kind::load_constant:
+          t = constant_as<T>(s);
+          break;
+        case ProgramStep::Kind::copy:
+          t = r[index(s.source)];
+          break;
+        case ProgramStep::Kind::multiply:
+          t = t * r[index(s.by)];
+          break;
+        case ProgramStep::Kind::multiply_add:
+          t = t * r[index(s.by)] + r[index(s.source)];
+          break;
+        case ProgramStep::Kind::multiply_add_constant:
+          t = t * r[index(s.by)] + constant_as<T>(s);
+          break;
+      }
+    }
+    return {r[index(ProgramRegister::g)],
+            {r[index(ProgramRegister::gu)], r[index(ProgramRegister::gv)], r[index(ProgramRegister::gw)]}};
+  }
+
+  /// GLSL statements that run the steps: one declaration of the registers a … gw
+  /// (initialised to 0.0), then one statement per step, each line starting with
+  /// `indent`. The inputs must be float variables named u, v, w in scope; the
+  /// result is left in g, gu, gv, gw.
+  std::string to_glsl(const std::string& indent) const;
+
+ private:
+  static std::size_t index(ProgramRegister r) { return static_cast<std::size_t>(r); }
+  template <typename T>
+  static T constant_as(const ProgramStep& s) {
+    if constexpr (sizeof(T) == sizeof(float)) {
+      return s.constant_float;
+    } else {
+      return static_cast<T>(s.constant);
+    }
+  }
+
+  std::vector<ProgramStep> steps_;
+  std::int32_t degree_ = 0;
+};
+
+/// `x` as a GLSL float literal that reads back as exactly x: 9 significant digits
+/// in exponent form ("1.50000000e+00", "-2.00000005e-30"), valid in GLSL ES 3.00
+/// and 330 alike (a `.` and an exponent, never an int literal, no `f` suffix, which
+/// ES 3.00 accepts but some older desktop compilers do not). Precondition: x finite.
+std::string format_glsl_float(float x);
+
+}  // namespace implicitizer

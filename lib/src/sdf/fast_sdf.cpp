@@ -1,0 +1,51 @@
+#include "implicitizer/sdf/fast_sdf.hpp"
+
+namespace implicitizer {
+
+FastSdf FastSdf::build(const Polynomial& f, const SceneBox& box) {
+  FastSdf sdf;
+  sdf.frame_ = make_scene_frame(box);
+  sdf.program_ = PolynomialProgram::compile(frame_polynomial(f, sdf.frame_));
+  // The centre and scale are floats already (SceneFrame's invariant): exact here.
+  for (std::size_t i = 0; i < 3; ++i) {
+    sdf.centre_[i] = to_mpq(sdf.frame_.centre[i]).get_d();
+    sdf.centre_float_[i] = static_cast<float>(sdf.centre_[i]);
+  }
+  sdf.scale_ = to_mpq(sdf.frame_.scale).get_d();
+  sdf.scale_float_ = static_cast<float>(sdf.scale_);
+  sdf.half_extent_ = 1 / sdf.scale_;
+  sdf.half_extent_float_ = static_cast<float>(sdf.half_extent_);
+  return sdf;
+}
+
+std::string FastSdf::to_glsl(const std::string& function) const {
+  const std::string s = format_glsl_float(scale_float_);
+  const std::string far = format_glsl_float(static_cast<float>(kFarField));
+  std::string out;
+  out += "// " + function + ": fast distance estimate F/|grad F| (first order, not a bound) of the\n";
+  out += "// degree-" + std::to_string(program_.degree()) +
+         " surface F = 0, negative where F < 0; evaluated in the frame u = (p - c) * s\n";
+  out += "// of the scene box, with |u| <= " + format_glsl_float(static_cast<float>(kFarField)) +
+         " (farther: the distance to the box). See docs/sdf.md.\n";
+  out += "float " + function + "(vec3 p) {\n";
+  const char* axes[3] = {"x", "y", "z"};
+  const char* names[3] = {"u", "v", "w"};
+  for (std::size_t i = 0; i < 3; ++i) {
+    out += std::string("  float ") + names[i] + " = (p." + axes[i] + " - " + format_glsl_float(centre_float_[i]) +
+           ") * " + s + ";\n";
+  }
+  out += "  if (max(abs(u), max(abs(v), abs(w))) > " + far + ") {\n";
+  out += "    float du = max(abs(u) - 1.0, 0.0);\n";
+  out += "    float dv = max(abs(v) - 1.0, 0.0);\n";
+  out += "    float dw = max(abs(w) - 1.0, 0.0);\n";
+  out += "    return sqrt(du * du + dv * dv + dw * dw) * " + format_glsl_float(half_extent_float_) + ";\n";
+  out += "  }\n";
+  out += program_.to_glsl("  ");
+  out += "  return g / max(sqrt(gu * gu + gv * gv + gw * gw), " +
+         format_glsl_float(static_cast<float>(kGradientFloor)) + ") * " + format_glsl_float(half_extent_float_) +
+         ";\n";
+  out += "}\n";
+  return out;
+}
+
+}  // namespace implicitizer

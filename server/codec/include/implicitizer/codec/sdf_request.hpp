@@ -1,0 +1,44 @@
+#pragma once
+/// \file
+/// A distance-function request as the outside world states it (the contract's
+/// `POST /v1/sdf` body, or `implicitizer sdf`'s arguments), its answer, and the one
+/// function that computes it, shared by the CLI and (later) the HTTP handler.
+/// Only `implicit` leaves and mode `fast` are built; scenes and `safe` are refused.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "implicitizer/core/budget.hpp"
+
+namespace implicitizer {
+
+/// The fields of a request, still as text.
+struct SdfRequest {
+  std::string implicit;  ///< F(x, y, z): the surface F = 0
+  std::string mode = "fast";
+  /// x0, y0, z0, x1, y1, z1 as exact numbers ("0.25", "1e-30", "-3/7"); empty:
+  /// the default box [-2, 2]^3.
+  std::vector<std::string> box;
+  std::string name = "surface";  ///< the function is NAME_sdf
+};
+
+/// What a request computed.
+struct SdfAnswer {
+  std::string glsl;               ///< the source of `float NAME_sdf(vec3 p)`
+  std::string function;           ///< NAME_sdf
+  std::string mode;               ///< "fast"
+  std::array<double, 6> box{};    ///< the box used, rounded to double
+  std::int32_t degree = 0;        ///< total degree of F
+};
+
+/// Answers `request` (the budget bounds parsing). Throws InputError with its field
+/// set: parse errors and `unknown_variable` ("implicit": only x, y, z may occur),
+/// `constant_polynomial` ("implicit"), `invalid_value` ("mode": neither fast nor
+/// safe), `not_built` ("mode": safe), `invalid_box` ("box": not six numbers, or
+/// hi <= lo), `invalid_name` ("name").
+SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& budget = Budget());
+
+}  // namespace implicitizer

@@ -1,0 +1,66 @@
+#include "implicitizer/codec/sdf_request.hpp"
+
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/polynomial/parser.hpp"
+#include "implicitizer/polynomial/ring.hpp"
+#include "implicitizer/sdf/fast_sdf.hpp"
+#include "implicitizer/sdf/glsl_export.hpp"
+#include "implicitizer/sdf/glsl_name.hpp"
+
+namespace implicitizer {
+namespace {
+
+InputError invalid_box(const std::string& message) { return InputError("invalid_box", message).in_field("box"); }
+
+// One box coordinate: an exact constant expression.
+Rational parse_box_number(const std::string& text, const RingPtr& ring, const Budget& budget) {
+  Polynomial c(ring);
+  try {
+    c = parse_polynomial(text, ring, budget);
+  } catch (const InputError&) {
+    throw invalid_box("'" + text + "' is not a number");
+  }
+  if (!c.is_constant()) throw invalid_box("'" + text + "' is not a number");
+  return c.is_zero() ? Rational(0) : c.coefficient(0);
+}
+
+}  // namespace
+
+SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& budget) {
+  const SdfMode mode = parse_sdf_mode(request.mode);
+  if (mode == SdfMode::safe) {
+    throw InputError("not_built", "mode 'safe' is not built yet (available: fast)").in_field("mode");
+  }
+  check_glsl_name(request.name);
+  const RingPtr ring = Ring::make({"x", "y", "z"});
+  SceneBox box = SceneBox::default_box();
+  if (!request.box.empty()) {
+    if (request.box.size() != 6) throw invalid_box("a box is six numbers x0,y0,z0,x1,y1,z1");
+    for (std::size_t i = 0; i < 3; ++i) {
+      box.lo[i] = parse_box_number(request.box[i], ring, budget);
+      box.hi[i] = parse_box_number(request.box[i + 3], ring, budget);
+    }
+  }
+  Polynomial f(ring);
+  try {
+    f = parse_polynomial(request.implicit, ring, budget);
+  } catch (const InputError& e) {
+    throw e.in_field("implicit");
+  }
+  SdfAnswer answer;
+  try {
+    answer.glsl = FastSdf::build(f, box).to_glsl(request.name + "_sdf");
+  } catch (const InputError& e) {
+    throw e.code() == "constant_polynomial" ? e.in_field("implicit") : e;
+  }
+  answer.function = request.name + "_sdf";
+  answer.mode = "fast";
+  for (std::size_t i = 0; i < 3; ++i) {
+    answer.box[i] = to_mpq(box.lo[i]).get_d();
+    answer.box[i + 3] = to_mpq(box.hi[i]).get_d();
+  }
+  answer.degree = f.total_degree();
+  return answer;
+}
+
+}  // namespace implicitizer

@@ -1,0 +1,96 @@
+#include "implicitizer/sdf/glsl_export.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/sdf/glsl_name.hpp"
+#include "sdf/sdf_support.hpp"
+
+namespace implicitizer {
+namespace {
+
+using testing::glslang_errors;
+using testing::parse_xyz;
+
+constexpr const char* kEs300 = "#version 300 es\nprecision highp float;";
+constexpr const char* kGlsl330 = "#version 330";
+
+void expect_compiles(const Polynomial& f, const SdfOptions& options) {
+  const std::string glsl = sdf_glsl(f, options);
+  EXPECT_EQ(glsl.find("pow"), std::string::npos);
+  EXPECT_NE(glsl.find("float " + options.name + "_sdf(vec3 p)"), std::string::npos);
+  EXPECT_EQ(glslang_errors(kEs300, glsl, options.name + "_sdf"), "") << glsl.substr(0, 2000);
+  EXPECT_EQ(glslang_errors(kGlsl330, glsl, options.name + "_sdf"), "");
+}
+
+TEST(SdfGlsl, SphereCompilesInBothDialects) {
+  expect_compiles(parse_xyz("x^2+y^2+z^2-1"), SdfOptions{SdfMode::fast, SceneBox::default_box(), "sphere"});
+}
+
+TEST(SdfGlsl, TorusCompilesInBothDialects) {
+  expect_compiles(parse_xyz("x^4+2*x^2*y^2+y^4+2*x^2*z^2+2*y^2*z^2+z^4-10*x^2-10*y^2+6*z^2+9"),
+                  SdfOptions{SdfMode::fast, testing::box_of("-3", "-3", "-1", "3", "3", "1"), "torus"});
+}
+
+TEST(SdfGlsl, SteinerSurfaceCompilesInBothDialects) {
+  expect_compiles(parse_xyz("x^2*y^2+y^2*z^2+z^2*x^2-x*y*z"), SdfOptions{SdfMode::fast, SceneBox::default_box(), "steiner"});
+}
+
+TEST(SdfGlsl, Degree18Tp33CompilesInBothDialects) {
+  expect_compiles(testing::tp33_implicit(),
+                  SdfOptions{SdfMode::fast, testing::box_of("-8", "-10", "-18", "8", "6", "4"), "tp_33"});
+}
+
+TEST(SdfGlsl, DefinesOnlyTheFunction) {
+  const std::string glsl = sdf_glsl(parse_xyz("x^2+y^2+z^2-1"), SdfOptions{});
+  // One function definition: the first '(' after a type at line start is ours.
+  std::size_t functions = 0;
+  for (std::size_t at = glsl.find("\nfloat "); at != std::string::npos; at = glsl.find("\nfloat ", at + 1)) {
+    ++functions;
+  }
+  EXPECT_EQ(functions, 1u);
+  EXPECT_EQ(glsl.find("uniform"), std::string::npos);
+  EXPECT_NE(glsl.find("float surface_sdf(vec3 p)"), std::string::npos);
+}
+
+TEST(SdfGlsl, SafeModeIsNotBuiltYet) {
+  try {
+    (void)sdf_glsl(parse_xyz("x"), SdfOptions{SdfMode::safe, SceneBox::default_box(), "a"});
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.code(), "not_built");
+    EXPECT_EQ(e.field(), "mode");
+  }
+  EXPECT_EQ(parse_sdf_mode("fast"), SdfMode::fast);
+  EXPECT_THROW((void)parse_sdf_mode("Fast"), InputError);
+}
+
+TEST(GlslName, AcceptsIdentifiers) {
+  for (const char* name : {"a", "sphere", "Tp_33", "_x", "surface2", "floats", "gl", "glx_y"}) {
+    EXPECT_NO_THROW(check_glsl_name(name)) << name;
+  }
+  EXPECT_NO_THROW(check_glsl_name(std::string(64, 'a')));
+}
+
+TEST(GlslName, RefusesInjectionsReservedNamesAndKeywords) {
+  for (const std::string& name : std::vector<std::string>{"", "a(){}; void b", "a b", "a;", "a\n#define x", "1a", "a-b", "gl_X", "gl_Position", "a__b", "__a", "a_",
+        "float", "void", "uniform", "highp", "precision", "vec3", "true", "struct", "return", "sampler2D", "main\xc3\xa9",
+        std::string(65, 'a')}) {
+    try {
+      check_glsl_name(name);
+      ADD_FAILURE() << "accepted '" << name << "'";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.code(), "invalid_name");
+      EXPECT_EQ(e.field(), "name");
+    }
+  }
+  // sdf_glsl validates before anything else.
+  EXPECT_THROW((void)sdf_glsl(parse_xyz("x"), SdfOptions{SdfMode::fast, SceneBox::default_box(), "a(){}; void b"}),
+               InputError);
+}
+
+}  // namespace
+}  // namespace implicitizer

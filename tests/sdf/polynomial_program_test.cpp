@@ -1,0 +1,65 @@
+#include "implicitizer/sdf/polynomial_program.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <random>
+
+#include "sdf/sdf_support.hpp"
+
+namespace implicitizer {
+namespace {
+
+using testing::parse_xyz;
+
+// The double run of the program against exact values of G and its partials: the
+// Horner nesting and the forward-mode derivatives are right for sparse and dense
+// polynomials, with gaps in every variable.
+TEST(PolynomialProgram, ValueAndGradientMatchExactArithmetic) {
+  for (const char* text : {"x", "z", "1/2+y", "x^3*z-y^2/4+1/8", "x^5-x*y^3*z^2+z^7/3-1/2",
+                           "x^2*y^2+y^2*z^2+z^2*x^2-x*y*z", "(x+y+z-1/3)^6/729", "y^4*z^4-x^4/5"}) {
+    const Polynomial g = parse_xyz(text);
+    const PolynomialProgram program = PolynomialProgram::compile(g);
+    EXPECT_EQ(program.degree(), g.total_degree()) << text;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> coordinate(-1, 1);
+    for (int i = 0; i < 20; ++i) {
+      const double u = coordinate(random), v = coordinate(random), w = coordinate(random);
+      const Rational point[3] = {Rational(u), Rational(v), Rational(w)};
+      const ValueAndGradient<double> r = program.evaluate(u, v, w);
+      EXPECT_NEAR(r.value, to_mpq(g.evaluate(point)).get_d(), 1e-13) << text;
+      for (std::size_t k = 0; k < 3; ++k) {
+        EXPECT_NEAR(r.gradient[k], to_mpq(g.derivative(k).evaluate(point)).get_d(), 1e-12) << text << " d" << k;
+      }
+    }
+  }
+}
+
+TEST(PolynomialProgram, FloatLiteralsReadBackExactly) {
+  for (float x : {1.0f, -1.0f, 0.1f, 1e-30f, 3.4e38f, 1.17549435e-38f, 0.333333343f, 16777217.0f}) {
+    const std::string text = format_glsl_float(x);
+    EXPECT_NE(text.find('.'), std::string::npos) << text;
+    EXPECT_NE(text.find('e'), std::string::npos) << text;
+    EXPECT_EQ(std::strtof(text.c_str(), nullptr), x) << text;
+  }
+}
+
+TEST(PolynomialProgram, GlslHasNoPowAndOnlyFloatLiterals) {
+  const PolynomialProgram program = PolynomialProgram::compile(parse_xyz("x^7-2*y^3*z+1/3"));
+  const std::string glsl = program.to_glsl("  ");
+  EXPECT_EQ(glsl.find("pow"), std::string::npos);
+  // Constants are written as d.dddddddde±dd: no bare integer after an operator.
+  EXPECT_EQ(glsl.find("+ 1;"), std::string::npos);
+  EXPECT_NE(glsl.find("3.33333343e-01"), std::string::npos);
+}
+
+TEST(PolynomialProgram, DropsCoefficientsFloatCannotHoldAsNormals) {
+  // 1e-40 is subnormal in float: a GPU flushes it, so the program drops it.
+  const PolynomialProgram program = PolynomialProgram::compile(parse_xyz("x-1e-40"));
+  EXPECT_EQ(program.evaluate(0.0f, 0.0f, 0.0f).value, 0.0f);
+  EXPECT_EQ(program.evaluate(0.5, 0.0, 0.0).value, 0.5);
+}
+
+}  // namespace
+}  // namespace implicitizer

@@ -1,0 +1,106 @@
+#pragma once
+// Shared by the tests of lib/sdf: surfaces, exact reference values, glslangValidator.
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "implicitization/surfaces.hpp"
+#include "implicitizer/implicitization/implicitize.hpp"
+#include "implicitizer/implicitization/parametrization.hpp"
+#include "implicitizer/polynomial/parser.hpp"
+#include "implicitizer/sdf/scene_frame.hpp"
+
+namespace implicitizer::testing {
+
+inline RingPtr xyz_ring() {
+  static const RingPtr ring = Ring::make({"x", "y", "z"});
+  return ring;
+}
+
+inline Polynomial parse_xyz(const std::string& text) { return parse_polynomial(text, xyz_ring()); }
+
+inline Rational exact(const std::string& number) {
+  const Polynomial c = parse_xyz(number);
+  return c.is_zero() ? Rational(0) : c.coefficient(0);
+}
+
+inline SceneBox box_of(const std::string& x0, const std::string& y0, const std::string& z0, const std::string& x1,
+                       const std::string& y1, const std::string& z1) {
+  return SceneBox{{exact(x0), exact(y0), exact(z0)}, {exact(x1), exact(y1), exact(z1)}};
+}
+
+// The implicit equation of tp_33 (degree 18, ../shared/bench/surfaces_hard.json),
+// computed once (about 0.4 s).
+inline const Polynomial& tp33_implicit() {
+  static const Polynomial f = [] {
+    for (const Surface& s : read_surfaces(std::string(IMPLICITIZER_SHARED_DIR) + "/bench/surfaces_hard.json")) {
+      if (s.name == "tp_33") return implicitize(parse_parametrization(s.x, s.y, s.z)).implicit;
+    }
+    std::abort();
+  }();
+  return f;
+}
+
+// F/|∇F| at the point (exactly the doubles given), in exact arithmetic, then rounded:
+// sign(F)·sqrt(F²/|∇F|²). NaN where ∇F = 0.
+inline double exact_estimate(const Polynomial& f, double x, double y, double z) {
+  const Rational point[3] = {Rational(x), Rational(y), Rational(z)};
+  const Rational value = f.evaluate(point);
+  Rational norm2(0);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Rational d = f.derivative(i).evaluate(point);
+    norm2 += d * d;
+  }
+  if (norm2 == Rational(0)) return std::nan("");
+  const double magnitude = std::sqrt(to_mpq(value * value / norm2).get_d());
+  return value < Rational(0) ? -magnitude : magnitude;
+}
+
+// Subnormals flushed to zero, as GPUs may (GLSL ES 3.00 §4.5.1 allows it).
+inline float flush(float x) { return std::fabs(x) < 1.17549435e-38f ? 0.0f : x; }
+
+// F at the point in plain float arithmetic, term by term from the expanded
+// coefficients, subnormals flushed: what a shader without the frame computes.
+inline float naive_float_value(const Polynomial& f, float x, float y, float z) {
+  float sum = 0;
+  for (std::size_t t = 0; t < f.num_terms(); ++t) {
+    float term = static_cast<float>(to_mpq(f.coefficient(t)).get_d());
+    const std::vector<std::int32_t> e = f.exponents(t);
+    const float xyz[3] = {x, y, z};
+    for (std::size_t i = 0; i < 3; ++i) {
+      for (std::int32_t k = 0; k < e[i]; ++k) term = flush(term * xyz[i]);
+    }
+    sum = flush(sum + flush(term));
+  }
+  return sum;
+}
+
+// Compiles `function` (defining float NAME(vec3)) in a fragment shader with
+// glslangValidator; `header` is "#version 300 es\nprecision highp float;" or
+// "#version 330". Returns the validator's output when it fails, "" on success.
+inline std::string glslang_errors(const std::string& header, const std::string& function, const std::string& name) {
+  char dir[] = "/tmp/sdf_glslXXXXXX";
+  if (mkdtemp(dir) == nullptr) return "mkdtemp failed";
+  const std::string path = std::string(dir) + "/shader.frag";
+  {
+    std::ofstream out(path);
+    out << header << "\n" << function << "\nout vec4 colour;\nvoid main() {\n"
+        << "  colour = vec4(" << name << "(vec3(0.5, -0.25, 0.125)));\n}\n";
+  }
+  const std::string log = std::string(dir) + "/log.txt";
+  const int rc = std::system(("/usr/bin/glslangValidator " + path + " > " + log + " 2>&1").c_str());
+  std::ifstream in(log);
+  const std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::remove(log.c_str());
+  std::remove(path.c_str());
+  rmdir(dir);
+  return rc == 0 ? "" : "status " + std::to_string(rc) + ": " + output;
+}
+
+}  // namespace implicitizer::testing
