@@ -9,6 +9,7 @@
 #include "handlers/implicitize.hpp"
 #include "handlers/metrics.hpp"
 #include "handlers/resultant.hpp"
+#include "handlers/sdf.hpp"
 #include "handlers/static_files.hpp"
 #include "implicitizer/core/errors.hpp"
 
@@ -64,6 +65,8 @@ Router::Router(HandlerContext context) : context_(std::move(context)), cors_(con
   routes_.push_back({"/v1/resultant", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r) {
                        return handle_resultant(r, c);
                      }});
+  routes_.push_back(
+      {"/v1/sdf", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r) { return handle_sdf(r, c); }});
 }
 
 std::vector<RouteInfo> Router::routes() const {

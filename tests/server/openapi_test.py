@@ -25,7 +25,8 @@ import yaml
 HTTP_METHODS = {"get", "put", "post", "delete", "options", "head", "patch", "trace"}
 REQUESTS = {"/v1/implicitize": ("implicitize", "ImplicitizeRequest"),
             "/v1/groebner": ("groebner", "GroebnerRequest"),
-            "/v1/resultant": ("resultant", "ResultantRequest")}
+            "/v1/resultant": ("resultant", "ResultantRequest"),
+            "/v1/sdf": ("sdf", "SdfRequest")}
 
 failures = []
 

@@ -227,7 +227,8 @@ TEST_F(RouterTest, KnowsItsRoutes) {
   std::vector<std::string> paths;
   for (const RouteInfo& route : router_.routes()) paths.push_back(route.path);
   EXPECT_EQ(paths,
-            (std::vector<std::string>{"/healthz", "/metrics", "/v1/implicitize", "/v1/groebner", "/v1/resultant"}));
+            (std::vector<std::string>{"/healthz", "/metrics", "/v1/implicitize", "/v1/groebner", "/v1/resultant",
+                                      "/v1/sdf"}));
 }
 
 }  // namespace

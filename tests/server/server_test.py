@@ -98,6 +98,25 @@ def test_implicitize_routes_and_curves(s):
     check(status == 400 and error_code(body) == "method_not_applicable", "three parameters: %s %r" % (status, body))
 
 
+def test_sdf(s):
+    status, headers, body = s.post_json("/v1/sdf", {"implicit": "x^2+y^2+z^2-1", "name": "ball"})
+    check(status == 200 and body.get("function") == "ball_sdf" and "float ball_sdf(vec3 p)" in body.get("glsl", "")
+          and "pow" not in body.get("glsl", "") and body.get("mode") == "fast" and body.get("degree") == 2
+          and body.get("box") == [-2, -2, -2, 2, 2, 2], "sdf sphere: %s %r" % (status, body))
+    check(headers.get("x-cache") == "miss", "first sdf request misses the cache")
+    status, _, body = s.post_json("/v1/sdf", {"implicit": "x^2+y^2+z^2-1e-12", "box": [-1e-6, -1e-6, -1e-6,
+                                                                                       1e-6, 1e-6, 1e-6]})
+    check(status == 200 and body.get("box", [0])[0] == -1e-6, "sdf tiny box: %s %r" % (status, body))
+    for request, code, field in [({"implicit": "x^2", "name": "a(){}; void b"}, "invalid_name", "name"),
+                                 ({"implicit": "x^2", "mode": "safe"}, "not_built", "mode"),
+                                 ({"implicit": "x^2", "scene": {}}, "not_built", "scene"),
+                                 ({"implicit": "x^2+s"}, "unknown_variable", "implicit"),
+                                 ({"implicit": "x^2", "box": [0, 0, 0, 1, 1]}, "invalid_box", "box")]:
+        status, _, body = s.post_json("/v1/sdf", request)
+        check(status == 400 and error_code(body) == code and body["error"].get("field") == field,
+              "sdf %r: %s %r" % (request, status, body))
+
+
 def test_cache(s):
     hits = s.metric("implicitizer_cache_hits_total")
     # Same request, other key order, spacing and timeout: the same canonical request.
@@ -443,6 +462,7 @@ def main():
         lambda: test_healthz_and_static(s),
         lambda: test_implicitize_sphere(s),
         lambda: test_implicitize_routes_and_curves(s),
+        lambda: test_sdf(s),
         lambda: test_cache(s),
         lambda: test_groebner(s),
         lambda: test_resultant(s),

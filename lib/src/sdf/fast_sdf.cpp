@@ -2,10 +2,10 @@
 
 namespace implicitizer {
 
-FastSdf FastSdf::build(const Polynomial& f, const SceneBox& box) {
+FastSdf FastSdf::build(const Polynomial& f, const SceneBox& box, const Budget& budget) {
   FastSdf sdf;
   sdf.frame_ = make_scene_frame(box);
-  sdf.program_ = PolynomialProgram::compile(frame_polynomial(f, sdf.frame_));
+  sdf.program_ = PolynomialProgram::compile(frame_polynomial(f, sdf.frame_, budget));
   // The centre and scale are floats already (SceneFrame's invariant): exact here.
   for (std::size_t i = 0; i < 3; ++i) {
     sdf.centre_[i] = to_mpq(sdf.frame_.centre[i]).get_d();

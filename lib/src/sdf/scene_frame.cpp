@@ -49,7 +49,7 @@ SceneFrame make_scene_frame(const SceneBox& box) {
   return frame;
 }
 
-Polynomial frame_polynomial(const Polynomial& f, const SceneFrame& frame) {
+Polynomial frame_polynomial(const Polynomial& f, const SceneFrame& frame, const Budget& budget) {
   if (f.is_constant()) throw InputError("constant_polynomial", "a constant polynomial has no surface");
   const RingPtr& ring = f.ring();
   std::vector<Polynomial> values;
@@ -57,7 +57,7 @@ Polynomial frame_polynomial(const Polynomial& f, const SceneFrame& frame) {
     values.push_back(Polynomial::constant(ring, frame.centre[i]) +
                      Polynomial::variable(ring, i).divided_by(frame.scale));
   }
-  const Polynomial g = f.compose(ring, values);
+  const Polynomial g = f.compose(ring, values, budget);
   Rational largest(0);
   for (std::size_t i = 0; i < g.num_terms(); ++i) {
     const Rational a = abs_of(g.coefficient(i));

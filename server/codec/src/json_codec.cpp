@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <vector>
@@ -281,6 +282,33 @@ ResultantRequest decode_resultant_request(std::string_view body, const JsonLimit
   request.variable = read_string(reader.require("variable"), "variable");
   if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = read_timeout_seconds(*v);
   reader.finish("polynomials, variable, timeout_ms");
+  return request;
+}
+
+SdfRequest decode_sdf_request(std::string_view body, const JsonLimits& limits) {
+  const rapidjson::Document document = parse_object(body, limits);
+  ObjectReader reader(document);
+  SdfRequest request;
+  if (reader.take("scene")) {
+    throw InputError("not_built", "scenes are not built yet: send an implicit equation").in_field("scene");
+  }
+  request.implicit = read_string(reader.require("implicit"), "implicit");
+  if (const auto* v = reader.take("mode")) request.mode = read_string(*v, "mode");
+  if (const auto* v = reader.take("name")) request.name = read_string(*v, "name");
+  if (const auto* v = reader.take("box")) {
+    if (!v->IsArray()) throw wrong_type("box", "an array of six numbers");
+    for (rapidjson::SizeType i = 0; i < v->Size(); ++i) {
+      const rapidjson::Value& x = (*v)[i];
+      if (!x.IsNumber()) throw wrong_type("box[" + std::to_string(i) + "]", "a number");
+      // The double's exact value in decimal (17 significant digits round-trip; the
+      // SDF frame then reads it as an exact rational).
+      char text[40];
+      std::snprintf(text, sizeof text, "%.17g", x.GetDouble());
+      request.box.emplace_back(text);
+    }
+  }
+  if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = read_timeout_seconds(*v);
+  reader.finish("implicit, mode, box, name, timeout_ms");
   return request;
 }
 

@@ -1,5 +1,7 @@
 #include "implicitizer/codec/sdf_request.hpp"
 
+#include <cmath>
+
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/polynomial/parser.hpp"
 #include "implicitizer/polynomial/ring.hpp"
@@ -24,9 +26,23 @@ Rational parse_box_number(const std::string& text, const RingPtr& ring, const Bu
   return c.is_zero() ? Rational(0) : c.coefficient(0);
 }
 
+// The double nearest to q: GMP's mpq_get_d truncates toward zero, which would turn
+// a box side of 1e-6 (read from JSON as a double) into the next double below it.
+double nearest_double(const Rational& q) {
+  const mpq_class exact = to_mpq(q);
+  const double truncated = exact.get_d();
+  const double away = std::nextafter(truncated, exact > 0 ? HUGE_VAL : -HUGE_VAL);
+  if (!std::isfinite(away)) return truncated;
+  const mpq_class a = abs(exact - mpq_class(truncated));
+  const mpq_class b = abs(exact - mpq_class(away));
+  return b < a ? away : truncated;
+}
+
 }  // namespace
 
-SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& budget) {
+SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& caller_budget) {
+  Budget budget = caller_budget;
+  if (request.timeout_seconds) budget.set_timeout(*request.timeout_seconds);
   const SdfMode mode = parse_sdf_mode(request.mode);
   if (mode == SdfMode::safe) {
     throw InputError("not_built", "mode 'safe' is not built yet (available: fast)").in_field("mode");
@@ -49,15 +65,15 @@ SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& budget) {
   }
   SdfAnswer answer;
   try {
-    answer.glsl = FastSdf::build(f, box).to_glsl(request.name + "_sdf");
+    answer.glsl = FastSdf::build(f, box, budget).to_glsl(request.name + "_sdf");
   } catch (const InputError& e) {
     throw e.code() == "constant_polynomial" ? e.in_field("implicit") : e;
   }
   answer.function = request.name + "_sdf";
   answer.mode = "fast";
   for (std::size_t i = 0; i < 3; ++i) {
-    answer.box[i] = to_mpq(box.lo[i]).get_d();
-    answer.box[i + 3] = to_mpq(box.hi[i]).get_d();
+    answer.box[i] = nearest_double(box.lo[i]);
+    answer.box[i + 3] = nearest_double(box.hi[i]);
   }
   answer.degree = f.total_degree();
   return answer;

@@ -46,7 +46,7 @@ class FastSdf {
 
   /// Frames `f` (three variables x, y, z in ring order) in `box` and compiles it.
   /// Throws InputError `constant_polynomial` (no surface), `invalid_box`.
-  static FastSdf build(const Polynomial& f, const SceneBox& box);
+  static FastSdf build(const Polynomial& f, const SceneBox& box, const Budget& budget = Budget());
 
   /// The estimate at p = (x, y, z), computed exactly as the GLSL does (float) or in
   /// double with the double-rounded constants. Negative where F < 0.

@@ -55,7 +55,8 @@ SceneFrame make_scene_frame(const SceneBox& box);
 /// exact, in the ring of `f` (variables x, y, z standing for u, v, w). Every
 /// coefficient of the result is in [-1, 1] and one is ±1. Sign-preserving: G < 0
 /// exactly where F < 0. Precondition: f is in a ring of exactly three variables.
-/// Throws InputError `constant_polynomial` when f is constant (no surface).
-Polynomial frame_polynomial(const Polynomial& f, const SceneFrame& frame);
+/// Throws InputError `constant_polynomial` when f is constant (no surface),
+/// LimitExceeded when `budget` runs out during the composition.
+Polynomial frame_polynomial(const Polynomial& f, const SceneFrame& frame, const Budget& budget = Budget());
 
 }  // namespace implicitizer

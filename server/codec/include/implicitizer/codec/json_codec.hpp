@@ -48,6 +48,12 @@ GroebnerRequest decode_groebner_request(std::string_view body, const JsonLimits&
 /// `wrong_number_of_polynomials` (field "polynomials") unless there are exactly two.
 ResultantRequest decode_resultant_request(std::string_view body, const JsonLimits& limits = {});
 
+/// Reads a `POST /v1/sdf` body: `{"implicit": F, "mode": "fast"?, "box": [x0, y0, z0,
+/// x1, y1, z1]?, "name": N?, "timeout_ms": T?}`. Box numbers are read as doubles and passed on as their
+/// exact decimal value. `"scene"` is refused with `not_built` (field "scene") until
+/// scenes are built. Throws InputError as decode_implicitize_request().
+SdfRequest decode_sdf_request(std::string_view body, const JsonLimits& limits = {});
+
 /// `{"implicit", "degree", "variables", "method", "verified", "elapsed_ms", "stats":
 /// {"pairs", "product_criterion", "chain_criterion", "reductions", "zero_reductions",
 /// "reduction_steps", "max_degree", "basis_size", "groebner_ms", "verify_ms"},

@@ -23,6 +23,8 @@ struct SdfRequest {
   /// the default box [-2, 2]^3.
   std::vector<std::string> box;
   std::string name = "surface";  ///< the function is NAME_sdf
+  /// Wall-time limit in seconds; absent means the caller's budget alone.
+  std::optional<double> timeout_seconds;
 };
 
 /// What a request computed.
@@ -34,7 +36,8 @@ struct SdfAnswer {
   std::int32_t degree = 0;        ///< total degree of F
 };
 
-/// Answers `request` (the budget bounds parsing). Throws InputError with its field
+/// Answers `request` under `budget` (whose deadline the request's timeout, when
+/// present, replaces). Throws InputError with its field
 /// set: parse errors and `unknown_variable` ("implicit": only x, y, z may occur),
 /// `constant_polynomial` ("implicit"), `invalid_value` ("mode": neither fast nor
 /// safe), `not_built` ("mode": safe), `invalid_box` ("box": not six numbers, or
