@@ -53,5 +53,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)is_identifier(request.variable);
   } catch (const InputError&) {
   }
+  try {
+    // The whole answer, not only the decoding: names are validated and box numbers
+    // parsed there, and the polynomial is small enough after the fuzzer's size cap.
+    (void)answer_sdf_request(decode_sdf_request(body), Budget::with_timeout(0.05));
+  } catch (const InputError&) {
+  } catch (const LimitExceeded&) {
+  }
   return 0;
 }
