@@ -2,8 +2,9 @@
 # Installs what implicitizer needs on Debian (bookworm): the compiler and CMake, the
 # number libraries (GMP, MPFR, FLINT, CGAL), Boost (Beast is header-only inside
 # libboost-dev), RapidJSON, GoogleTest, the oracles the tests compare against
-# (Singular, Macaulay2), glslang for checking generated GLSL, Python 3 and clang
-# (libFuzzer, clang-format).
+# (Singular, Macaulay2), glslang for checking generated GLSL, EGL/OpenGL ES and Mesa's
+# drivers for running it on llvmpipe (tests/sdf/glsl_execution_test.cpp), Python 3 and
+# clang (libFuzzer, clang-format).
 #
 # Idempotent: asks dpkg which packages are missing and only then runs apt-get, so a
 # machine that has everything is left alone (no apt-get update, no network).
@@ -16,6 +17,7 @@ packages=(
   googletest libgtest-dev libgmock-dev
   singular macaulay2
   glslang-tools
+  libegl-dev libgles-dev libgl1-mesa-dri
   python3 python3-yaml
   clang clang-format libclang-rt-dev
   wrk nginx
