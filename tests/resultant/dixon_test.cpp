@@ -31,7 +31,7 @@ TEST(DixonPencil, BilinearPatchIsTheHyperbolicParaboloid) {
   EXPECT_EQ(to_string(determinant(m, 2).primitive_part()), "x*y-z");
 }
 
-TEST(DixonPencil, EntriesAreAffineAndTheSizeIs2mn) {
+TEST(DixonPencil, SizeIs2mnWithThreeVariables) {
   const auto sys = auxiliary_system("1", "s^2*t+s*t^2+1", "s^2-t^3+s*t", "s^2*t^3+s+2*t");
   const MatrixPencil m = dixon_pencil(sys, 2, 3);
   EXPECT_EQ(m.size(), 12u);

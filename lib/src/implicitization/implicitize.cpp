@@ -126,15 +126,6 @@ void finish(ImplicitizeResult& result, const Parametrization& p, const Budget& b
   result.elapsed_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// ω = L (the lcm of the denominators) and ξ_v = p_v·(L / q_v): x_v = ξ_v / ω.
-std::vector<Polynomial> common_denominator_forms(const Parametrization& p) {
-  Polynomial l = Polynomial::constant(p.parameter_ring, Rational(1));
-  for (const auto& c : p.coordinates) l = lcm(l, c.denominator());
-  std::vector<Polynomial> forms = {l};
-  for (const auto& c : p.coordinates) forms.push_back(c.numerator() * divide_exact(l, c.denominator()));
-  return forms;
-}
-
 // Theorem 1.13: Res_aux = c·f^l, so f is the square-free part, taken with respect to
 // a variable Res_aux involves. `compute(stable_primes)` computes Res_aux. Returns
 // nullopt (with the stats in `stats`) when Res_aux vanishes identically.
@@ -189,7 +180,7 @@ std::optional<ImplicitizeResult> by_resultant(const Parametrization& p, const Au
 // The resultant route for any input it applies to.
 std::optional<ImplicitizeResult> by_resultant(const Parametrization& p, const Budget& budget,
                                               std::optional<AuxiliaryResultantStats>& stats) {
-  const std::vector<Polynomial> f = common_denominator_forms(p);
+  const std::vector<Polynomial> f = common_denominator_form(p);
   if (p.coordinates.size() == 2) {
     return from_resultant(p, budget, stats, [&](std::size_t stable_primes) {
       return curve_auxiliary_resultant({f[0], f[1], f[2]}, plane_ring(), resultant_options(budget, stable_primes));
@@ -214,8 +205,10 @@ std::optional<ImplicitizeResult> groebner_within(const Parametrization& p, const
   }
 }
 
-// Seconds per modular operation of the determinant, measured on this machine
-// (enneper: 7·10⁶ operations in 14 ms of one core), for AuxiliaryResultantPlan.
+// Seconds per modular operation of the determinant, for AuxiliaryResultantPlan's
+// prediction: enneper's plan predicts about 7·10⁶ operations, and the resultant route
+// took 15–20 ms on it in the runs of docs/benchmarks.md (2–3 ns each, verification
+// included); the lower end is taken so that the head start stays short.
 constexpr double kSecondsPerOperation = 2e-9;
 
 }  // namespace
@@ -269,7 +262,7 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
     // of magnitude on dense ones (tri_cubic: 40 ms against more than 60 s), and which
     // is which shows only by running: Buchberger gets a head start of half the
     // predicted determinant time (at least 2 ms), then the resultant runs.
-    const std::vector<Polynomial> f = common_denominator_forms(p);
+    const std::vector<Polynomial> f = common_denominator_form(p);
     const AuxiliaryResultantPlan plan =
         plan_auxiliary_resultant({f[0], f[1], f[2], f[3]}, resultant_options(budget, 1));
     probe = plan.stats;

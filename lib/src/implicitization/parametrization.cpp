@@ -5,6 +5,7 @@
 
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/polynomial/expression.hpp"
+#include "implicitizer/polynomial/gcd.hpp"
 #include "implicitizer/polynomial/parser.hpp"
 
 namespace implicitizer {
@@ -22,6 +23,14 @@ const Expression* find_identifier(const Expression& e, const std::string& name) 
 }
 
 }  // namespace
+
+std::vector<Polynomial> common_denominator_form(const Parametrization& p) {
+  Polynomial w = Polynomial::constant(p.parameter_ring, Rational(1));
+  for (const auto& c : p.coordinates) w = lcm(w, c.denominator());
+  std::vector<Polynomial> forms = {w};
+  for (const auto& c : p.coordinates) forms.push_back(c.numerator() * divide_exact(w, c.denominator()));
+  return forms;
+}
 
 std::vector<std::string> coordinate_names(std::size_t count) {
   std::vector<std::string> names = {"x", "y", "z"};

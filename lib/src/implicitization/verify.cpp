@@ -7,7 +7,6 @@
 #include <stdexcept>
 
 #include "implicitizer/modular/prime_sequence.hpp"
-#include "implicitizer/polynomial/gcd.hpp"
 
 namespace implicitizer {
 
@@ -63,12 +62,10 @@ namespace {
 // high degree); the surfaces of ../shared/bench need at most 3025 points.
 constexpr double kMaxGridPoints = 4e6;
 
-Integer integer_of(const Rational& q) { return to_mpq(q).get_num(); }
-
 // ‖p‖₁ for an integer polynomial.
 Integer norm1(const Polynomial& p) {
   Integer sum = 0;
-  for (std::size_t t = 0; t < p.num_terms(); ++t) sum += abs(integer_of(p.coefficient(t)));
+  for (std::size_t t = 0; t < p.num_terms(); ++t) sum += abs(to_integer(p.coefficient(t)));
   return sum;
 }
 
@@ -76,7 +73,7 @@ Integer norm1(const Polynomial& p) {
 std::vector<mp_limb_t> residues_of(const Polynomial& p, mp_limb_t prime) {
   std::vector<mp_limb_t> out(p.num_terms());
   for (std::size_t t = 0; t < p.num_terms(); ++t) {
-    const Integer c = integer_of(p.coefficient(t));
+    const Integer c = to_integer(p.coefficient(t));
     out[t] = mpz_fdiv_ui(c.get_mpz_t(), prime);
   }
   return out;
@@ -109,17 +106,8 @@ bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& para
 
   // ω = lcm of the denominators and ξ_v = p_v·(ω / q_v), in `forms` as ω, ξ_1, …, ξ_n;
   // all scaled to integers (G only changes by a non-zero constant).
-  Polynomial w = Polynomial::constant(params, Rational(1));
-  for (const auto& c : parametrization.coordinates) w = lcm(w, c.denominator());
-  std::vector<Polynomial> forms = {w};
-  for (const auto& c : parametrization.coordinates) forms.push_back(c.numerator() * divide_exact(w, c.denominator()));
-  Integer denominator = 1;
-  for (const auto& p : forms) {
-    if (!p.is_zero()) {
-      mpz_lcm(denominator.get_mpz_t(), denominator.get_mpz_t(), to_mpq(p.content()).get_den().get_mpz_t());
-    }
-  }
-  for (auto& p : forms) p = p.scaled(to_rational(denominator));
+  std::vector<Polynomial> forms = common_denominator_form(parametrization);
+  scale_to_integers(forms);
   const Polynomial f = implicit.primitive_part();
 
   // The grid: d·m_j + 1 points along parameter j.
@@ -142,7 +130,7 @@ bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& para
     const std::int32_t* e = space.exponents(f.monomial(t));
     std::int32_t degree = 0;
     for (std::size_t v = 0; v < n; ++v) degree += e[v];
-    Integer term = abs(integer_of(f.coefficient(t)));
+    Integer term = abs(to_integer(f.coefficient(t)));
     Integer factor;
     mpz_pow_ui(factor.get_mpz_t(), norms[0].get_mpz_t(), static_cast<unsigned long>(d - degree));
     term *= factor;

@@ -317,6 +317,16 @@ Rational Polynomial::evaluate(std::span<const Rational> point) const {
   return to_rational(sum) * content_;
 }
 
+void scale_to_integers(std::span<Polynomial> polynomials) {
+  Integer denominator = 1;
+  for (const Polynomial& p : polynomials) {
+    if (!p.is_zero()) {
+      mpz_lcm(denominator.get_mpz_t(), denominator.get_mpz_t(), to_mpq(p.content()).get_den().get_mpz_t());
+    }
+  }
+  for (Polynomial& p : polynomials) p = p.scaled(to_rational(denominator));
+}
+
 Polynomial sum_of(const RingPtr& ring, std::vector<Polynomial> parts) {
   if (parts.empty()) return Polynomial(ring);
   while (parts.size() > 1) {

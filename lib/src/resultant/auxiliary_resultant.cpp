@@ -29,19 +29,6 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// ω, ξ, η, ζ scaled by one common integer so that every coefficient is an integer
-// (the resultant only changes by a constant factor).
-std::array<Polynomial, 4> integral(const std::array<Polynomial, 4>& wxyz) {
-  Integer denominator = 1;
-  for (const auto& p : wxyz) {
-    const mpq_class c = to_mpq(p.content());
-    if (!p.is_zero()) mpz_lcm(denominator.get_mpz_t(), denominator.get_mpz_t(), c.get_den().get_mpz_t());
-  }
-  std::array<Polynomial, 4> out = wxyz;
-  for (auto& p : out) p = p.scaled(to_rational(denominator));
-  return out;
-}
-
 // A candidate formulation: its pencil, minor and degree bound.
 struct Candidate {
   AuxiliaryFormulation formulation;
@@ -65,7 +52,9 @@ double AuxiliaryResultantPlan::predicted_operations() const {
 AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>& input,
                                                 const AuxiliaryResultantOptions& options) {
   const auto start = Clock::now();
-  const std::array<Polynomial, 4> wxyz = integral(input);
+  // One common integer factor for ω, ξ, η, ζ (the resultant changes by a constant).
+  std::array<Polynomial, 4> wxyz = input;
+  scale_to_integers(wxyz);
   AuxiliaryResultantPlan plan;
   auto& stats = plan.stats;
   for (const auto& p : wxyz) {

@@ -7,12 +7,6 @@ namespace implicitizer {
 
 namespace {
 
-Integer integer_of(const Rational& q) {
-  const mpq_class v = to_mpq(q);
-  if (v.get_den() != 1) throw std::invalid_argument("curve_sylvester_pencil: integer coefficients expected");
-  return v.get_num();
-}
-
 double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -33,10 +27,10 @@ MatrixPencil curve_sylvester_pencil(const std::array<Polynomial, 3>& wxy) {
   auto place = [&](std::size_t row, std::int32_t shift, const Polynomial& numerator, std::size_t part) {
     auto column = [&](std::int32_t exponent) { return static_cast<std::size_t>(2 * n - 1 - (exponent + shift)); };
     for (std::size_t t = 0; t < numerator.num_terms(); ++t) {
-      pencil.at(0, row, column(ring.exponents(numerator.monomial(t))[0])) = integer_of(numerator.coefficient(t));
+      pencil.at(0, row, column(ring.exponents(numerator.monomial(t))[0])) = to_integer(numerator.coefficient(t));
     }
     for (std::size_t t = 0; t < wxy[0].num_terms(); ++t) {
-      pencil.at(part, row, column(ring.exponents(wxy[0].monomial(t))[0])) = -integer_of(wxy[0].coefficient(t));
+      pencil.at(part, row, column(ring.exponents(wxy[0].monomial(t))[0])) = -to_integer(wxy[0].coefficient(t));
     }
   };
   for (std::int32_t i = 0; i < n; ++i) {
@@ -51,14 +45,8 @@ AuxiliaryResultant curve_auxiliary_resultant(const std::array<Polynomial, 3>& in
   const auto start = std::chrono::steady_clock::now();
   if (plane->num_variables() != 2) throw std::invalid_argument("curve_auxiliary_resultant: the plane ring needs x, y");
   // One common integer factor for ω, ξ, η (the resultant changes by a constant).
-  Integer denominator = 1;
-  for (const auto& p : input) {
-    if (!p.is_zero()) {
-      mpz_lcm(denominator.get_mpz_t(), denominator.get_mpz_t(), to_mpq(p.content()).get_den().get_mpz_t());
-    }
-  }
   std::array<Polynomial, 3> wxy = input;
-  for (auto& p : wxy) p = p.scaled(to_rational(denominator));
+  scale_to_integers(wxy);
 
   AuxiliaryResultant result{Polynomial(plane), {}};
   auto& stats = result.stats;

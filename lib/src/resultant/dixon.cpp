@@ -8,13 +8,6 @@ namespace implicitizer {
 
 namespace {
 
-// The integer value of a rational that is known to be an integer.
-Integer integer_of(const Rational& q) {
-  const mpq_class v = to_mpq(q);
-  if (v.get_den() != 1) throw std::invalid_argument("dixon_pencil: the polynomials must have integer coefficients");
-  return v.get_num();
-}
-
 // det of the 3×3 matrix whose columns are a, b, c, each given at its three rows.
 Polynomial det3(const std::array<Polynomial, 3>& a, const std::array<Polynomial, 3>& b,
                 const std::array<Polynomial, 3>& c) {
@@ -64,7 +57,7 @@ MatrixPencil dixon_pencil(const std::array<Polynomial, 4>& wxyz, std::int32_t m,
       }
       const auto row = static_cast<std::size_t>(e[0] * 2 * n + e[1]);
       const auto col = static_cast<std::size_t>(e[2] * n + e[3]);
-      pencil.at(part, row, col) = integer_of(delta.coefficient(term));
+      pencil.at(part, row, col) = to_integer(delta.coefficient(term));
     }
   }
   return pencil;

@@ -7,12 +7,6 @@ namespace implicitizer {
 
 namespace {
 
-Integer integer_of(const Rational& q) {
-  const mpq_class v = to_mpq(q);
-  if (v.get_den() != 1) throw std::invalid_argument("macaulay_pencil: the polynomials must have integer coefficients");
-  return v.get_num();
-}
-
 // A monomial r^a s^b t^c of the fixed degree d, identified by (b, c).
 struct Exponent {
   std::int32_t r, s, t;
@@ -58,7 +52,7 @@ MacaulayPencil macaulay_pencil(const std::array<Polynomial, 4>& wxyz, std::int32
         // The homogenized term r^(n-a-b) s^a t^b times the shift lands on (s, t) =
         // (a + shift_s, b + shift_t) in degree d.
         const auto col = index.at({e[0] + shift_s, e[1] + shift_t});
-        Integer c = integer_of(f.coefficient(term));
+        Integer c = to_integer(f.coefficient(term));
         result.matrix.at(part, row, col) = negate ? Integer(-c) : c;
       }
     };

@@ -20,6 +20,9 @@ using Integer = mpz_class;
 mpq_class to_mpq(const Rational& q);
 /// Returns `q` as a CGAL rational (exact copy).
 Rational to_rational(const mpq_class& q);
+/// The integer value of `q`; throws std::invalid_argument when q is not an integer.
+Integer to_integer(const Rational& q);
+
 /// Returns the integer `z` as a CGAL rational.
 Rational to_rational(const Integer& z);
 /// Prints `q` as `n` or `n/d` (lowest terms, sign on the numerator).

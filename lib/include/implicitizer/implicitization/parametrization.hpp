@@ -21,6 +21,11 @@ struct Parametrization {
   std::vector<std::string> sources;            ///< the texts they were read from
 };
 
+/// ω, ξ_1, …, ξ_n with x_v = ξ_v / ω over one denominator: ω the lcm of the
+/// coordinates' denominators q_v, ξ_v = p_v·(ω / q_v). The form the resultant route
+/// and the verification work with.
+std::vector<Polynomial> common_denominator_form(const Parametrization& parametrization);
+
 /// The names of the coordinates of a parametrization with `count` (2 or 3)
 /// coordinates: x, y and z.
 std::vector<std::string> coordinate_names(std::size_t count);

@@ -127,6 +127,12 @@ class Polynomial {
   std::vector<std::int32_t> monomials_;
 };
 
+/// Multiplies every polynomial of `polynomials` by one positive integer, the lcm of
+/// their contents' denominators, so that all coefficients become integers: what the
+/// modular algorithms need, and harmless where only the polynomials' ratios matter
+/// (a parametrization over a common denominator, a resultant up to a constant).
+void scale_to_integers(std::span<Polynomial> polynomials);
+
 /// The sum of `parts` (all in `ring`), added pairwise so that long sums cost
 /// O(total · log count) instead of O(total · count).
 Polynomial sum_of(const RingPtr& ring, std::vector<Polynomial> parts);
