@@ -120,8 +120,9 @@ to the scene box (docs/sdf.md). It compiles as GLSL ES 3.00 and as GLSL 330.
 
 options:
   --implicit E          the polynomial F(x, y, z) (required; only x, y, z may occur)
-  --mode fast           F/|grad F|, first order, not a bound (default; the only mode
-                        built: safe is a usage error until it is)
+  --mode fast|safe      fast: F/|grad F|, first order, not a bound (default); safe: a
+                        proven lower bound of the distance (sphere tracing never
+                        crosses the surface; slower, 0 within fp32's resolution)
   --box x0,y0,z0,x1,y1,z1
                         the scene box, exact numbers (default -2,-2,-2,2,2,2)
   --name NAME           function NAME_sdf (default surface): [A-Za-z_][A-Za-z0-9_]*,
@@ -132,7 +133,8 @@ options:
 
 --scene is not built yet (usage error).
 exit status: 0 success, 2 usage error, 3 invalid input (parse error, unknown
-variable, constant polynomial, invalid_box, invalid_name).
+variable, constant polynomial, invalid_box, invalid_name, degree_too_high: mode
+safe and terms beyond fp32's range).
 )";
 
 }  // namespace implicitizer::cli

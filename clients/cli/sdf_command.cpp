@@ -32,8 +32,7 @@ int run_sdf_command(std::span<const std::string> args) {
     // `implicitize --method interpolation`.
     if (arguments.has("scene")) throw UsageError("--scene is not built yet (use --implicit E)");
     if (const auto mode = arguments.value("mode")) {
-      if (*mode == "safe") throw UsageError("--mode safe is not built yet (available: fast)");
-      if (*mode != "fast") throw UsageError("unknown --mode '" + *mode + "' (expected fast or safe)");
+      if (*mode != "fast" && *mode != "safe") throw UsageError("unknown --mode '" + *mode + "' (expected fast or safe)");
       request.mode = *mode;
     }
     if (!arguments.positionals().empty()) throw UsageError("unexpected argument '" + arguments.positionals()[0] + "'");

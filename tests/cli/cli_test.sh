@@ -260,7 +260,14 @@ fi
 expect_json "sdf json" 0 'j["function"] == "surface_sdf" and j["mode"] == "fast" and j["degree"] == 2 and j["box"] == [-2, -2, -2, 2, 2, 2] and "float surface_sdf(vec3 p)" in j["glsl"]' \
   sdf --implicit "x^2+y^2+z^2-1" --json
 expect_json "sdf json box" 0 'j["box"] == [0, 0, 0, 1e-6, 1e-6, 1e-6]' sdf --implicit "x-1e-7" --box 0,0,0,1e-6,1e-6,1e-6 --json
-expect_status "sdf safe not built" 2 "not built yet" sdf --implicit "x" --mode safe
+run sdf --implicit "x^2+y^2+z^2-1" --mode safe --name ball
+if [[ $(status) == 0 ]] && grep -q "^float ball_sdf(vec3 p) {" "$WORK/out" && grep -q "safe distance bound" "$WORK/out" \
+  && ! grep -q pow "$WORK/out"; then pass; else
+  fail "sdf --mode safe prints the safe float ball_sdf(vec3 p)"
+fi
+expect_json "sdf safe json" 0 'j["mode"] == "safe" and "float surface_sdf(vec3 p)" in j["glsl"]' \
+  sdf --implicit "x^2+y^2+z^2-1" --mode safe --json
+expect_status "sdf safe degree too high" 3 "degree_too_high" sdf --implicit "x^60+y" --mode safe
 expect_status "sdf scene not built" 2 "not built yet" sdf --scene scene.json
 expect_status "sdf unknown mode" 2 "unknown --mode" sdf --implicit "x" --mode exact
 expect_status "sdf missing implicit" 2 "missing --implicit" sdf

@@ -9,6 +9,7 @@
 #include "implicitizer/codec/groebner_request.hpp"
 #include "implicitizer/codec/implicitize_request.hpp"
 #include "implicitizer/codec/resultant_request.hpp"
+#include "implicitizer/codec/sdf_request.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/polynomial/printer.hpp"
 
@@ -277,6 +278,37 @@ TEST(AnswerImplicitizeRequest, PlaneCurveWithoutZ) {
   EXPECT_EQ(json.rfind(R"({"implicit":"x^3+x^2-y^2","degree":3,"variables":["x","y"],"method":"resultant",)", 0), 0u)
       << json;
   EXPECT_NE(json.find(R"("formulation":"sylvester")"), std::string::npos) << json;
+}
+
+TEST(AnswerSdfRequest, ModeSafeAnswersTheBound) {
+  const SdfRequest request = decode_sdf_request(R"({"implicit": "x^2+y^2+z^2-1", "mode": "safe", "name": "ball"})");
+  EXPECT_EQ(request.mode, "safe");
+  const SdfAnswer answer = answer_sdf_request(request);
+  EXPECT_EQ(answer.mode, "safe");
+  EXPECT_EQ(answer.function, "ball_sdf");
+  EXPECT_NE(answer.glsl.find("float ball_sdf(vec3 p)"), std::string::npos);
+  EXPECT_NE(answer.glsl.find("safe distance bound"), std::string::npos);
+  EXPECT_EQ(answer.glsl.find("pow"), std::string::npos);
+  EXPECT_NE(encode_sdf_response(answer).find(R"("mode":"safe")"), std::string::npos);
+  // Fast stays the default.
+  EXPECT_EQ(answer_sdf_request(decode_sdf_request(R"({"implicit": "x"})")).mode, "fast");
+}
+
+TEST(AnswerSdfRequest, ErrorsNameTheirField) {
+  SdfRequest r;
+  r.implicit = "x^60+y";
+  r.mode = "safe";
+  const InputError degree = input_error_of([&] { answer_sdf_request(r); });
+  EXPECT_EQ(degree.code(), "degree_too_high");
+  EXPECT_EQ(degree.field(), "implicit");
+  r.mode = "exact";
+  const InputError mode = input_error_of([&] { answer_sdf_request(r); });
+  EXPECT_EQ(mode.code(), "invalid_value");
+  EXPECT_EQ(mode.field(), "mode");
+  // Scenes are another slice: still refused.
+  const InputError scene = input_error_of([&] { decode_sdf_request(R"({"implicit": "x", "scene": {}})"); });
+  EXPECT_EQ(scene.code(), "not_built");
+  EXPECT_EQ(scene.field(), "scene");
 }
 
 TEST(EncodeError, Shapes) {

@@ -56,16 +56,52 @@ TEST(SdfGlsl, DefinesOnlyTheFunction) {
   EXPECT_NE(glsl.find("float surface_sdf(vec3 p)"), std::string::npos);
 }
 
-TEST(SdfGlsl, SafeModeIsNotBuiltYet) {
+TEST(SdfGlsl, SafeSphereTorusAndSteinerCompileInBothDialects) {
+  expect_compiles(parse_xyz("x^2+y^2+z^2-1"), SdfOptions{SdfMode::safe, SceneBox::default_box(), "sphere"});
+  expect_compiles(parse_xyz("x^4+2*x^2*y^2+y^4+2*x^2*z^2+2*y^2*z^2+z^4-10*x^2-10*y^2+6*z^2+9"),
+                  SdfOptions{SdfMode::safe, testing::box_of("-3", "-3", "-1", "3", "3", "1"), "torus"});
+  expect_compiles(parse_xyz("x^2*y^2+y^2*z^2+z^2*x^2-x*y*z"),
+                  SdfOptions{SdfMode::safe, SceneBox::default_box(), "steiner"});
+  expect_compiles(parse_xyz("1e-30*((x-1e-3)^2+(y-2*1e-3)^2+(z+1e-3)^2-1e-12)"),
+                  SdfOptions{SdfMode::safe,
+                             testing::box_of("0.999e-3", "1.999e-3", "-1.001e-3", "1.001e-3", "2.001e-3", "-0.999e-3"),
+                             "tiny"});
+}
+
+TEST(SdfGlsl, SafeDegree18Tp33CompilesInBothDialects) {
+  expect_compiles(testing::tp33_implicit(),
+                  SdfOptions{SdfMode::safe, testing::box_of("-8", "-10", "-18", "8", "6", "4"), "tp_33"});
+}
+
+TEST(SdfGlsl, SafeModeDefinesOnlyTheFunction) {
+  const std::string glsl = sdf_glsl(parse_xyz("x^2+y^2+z^2-1"), SdfOptions{SdfMode::safe, SceneBox::default_box(), "a"});
+  std::size_t functions = 0;
+  for (std::size_t at = glsl.find("\nfloat "); at != std::string::npos; at = glsl.find("\nfloat ", at + 1)) {
+    ++functions;
+  }
+  EXPECT_EQ(functions, 1u);
+  EXPECT_EQ(glsl.find("uniform"), std::string::npos);
+  EXPECT_NE(glsl.find("float a_sdf(vec3 p)"), std::string::npos);
+  EXPECT_NE(glsl.find("safe distance bound"), std::string::npos);
+}
+
+TEST(SdfGlsl, ParsesModesAndRefusesOthers) {
+  EXPECT_EQ(parse_sdf_mode("fast"), SdfMode::fast);
+  EXPECT_EQ(parse_sdf_mode("safe"), SdfMode::safe);
   try {
-    (void)sdf_glsl(parse_xyz("x"), SdfOptions{SdfMode::safe, SceneBox::default_box(), "a"});
+    (void)parse_sdf_mode("Fast");
     ADD_FAILURE() << "accepted";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.code(), "not_built");
+    EXPECT_EQ(e.code(), "invalid_value");
     EXPECT_EQ(e.field(), "mode");
   }
-  EXPECT_EQ(parse_sdf_mode("fast"), SdfMode::fast);
-  EXPECT_THROW((void)parse_sdf_mode("Fast"), InputError);
+  // Mode safe refuses what fp32 cannot bound (SafeSdf::build).
+  try {
+    (void)sdf_glsl(parse_xyz("x^60+y"), SdfOptions{SdfMode::safe, SceneBox::default_box(), "a"});
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.code(), "degree_too_high");
+  }
 }
 
 TEST(GlslName, AcceptsIdentifiers) {

@@ -59,6 +59,33 @@ TEST(PolynomialProgram, DropsCoefficientsFloatCannotHoldAsNormals) {
   const PolynomialProgram program = PolynomialProgram::compile(parse_xyz("x-1e-40"));
   EXPECT_EQ(program.evaluate(0.0f, 0.0f, 0.0f).value, 0.0f);
   EXPECT_EQ(program.evaluate(0.5, 0.0, 0.0).value, 0.5);
+  EXPECT_EQ(program.dropped_terms(), 1u);
+  EXPECT_EQ(PolynomialProgram::compile(parse_xyz("x-1e-30")).dropped_terms(), 0u);
+}
+
+// The value-only program runs the value steps of the full one, in the same order:
+// its float results are bit-identical, with fewer steps and only a, b, g in GLSL.
+TEST(PolynomialProgram, ValueOnlyProgramRoundsLikeTheFullOne) {
+  for (const char* text : {"x", "1/2+y", "x^5-x*y^3*z^2+z^7/3-1/2", "(x+y+z-1/3)^6/729", "y^4*z^4-x^4/5"}) {
+    const Polynomial g = parse_xyz(text);
+    const PolynomialProgram full = PolynomialProgram::compile(g);
+    const PolynomialProgram value = PolynomialProgram::compile(g, ProgramOutputs::value);
+    EXPECT_EQ(value.outputs(), ProgramOutputs::value);
+    EXPECT_EQ(value.degree(), full.degree());
+    EXPECT_LT(value.steps().size(), full.steps().size()) << text;
+    std::mt19937 random(9);
+    std::uniform_real_distribution<float> coordinate(-2, 2);
+    for (int i = 0; i < 50; ++i) {
+      const float u = coordinate(random), v = coordinate(random), w = coordinate(random);
+      const ValueAndGradient<float> r = value.evaluate(u, v, w);
+      EXPECT_EQ(r.value, full.evaluate(u, v, w).value) << text;
+      EXPECT_EQ(r.gradient[0], 0.0f);
+    }
+    const std::string glsl = value.to_glsl("");
+    EXPECT_EQ(glsl.rfind("float a = 0.0, b = 0.0, g = 0.0;\n", 0), 0u) << glsl;
+    EXPECT_EQ(glsl.find("gu"), std::string::npos);
+    EXPECT_EQ(glsl.find("aw"), std::string::npos);
+  }
 }
 
 }  // namespace

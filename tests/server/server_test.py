@@ -107,8 +107,13 @@ def test_sdf(s):
     status, _, body = s.post_json("/v1/sdf", {"implicit": "x^2+y^2+z^2-1e-12", "box": [-1e-6, -1e-6, -1e-6,
                                                                                        1e-6, 1e-6, 1e-6]})
     check(status == 200 and body.get("box", [0])[0] == -1e-6, "sdf tiny box: %s %r" % (status, body))
+    status, _, body = s.post_json("/v1/sdf", {"implicit": "x^2+y^2+z^2-1", "mode": "safe", "name": "ball"})
+    check(status == 200 and body.get("mode") == "safe" and "float ball_sdf(vec3 p)" in body.get("glsl", "")
+          and "safe distance bound" in body.get("glsl", "") and "pow" not in body.get("glsl", ""),
+          "sdf safe sphere: %s %r" % (status, body))
     for request, code, field in [({"implicit": "x^2", "name": "a(){}; void b"}, "invalid_name", "name"),
-                                 ({"implicit": "x^2", "mode": "safe"}, "not_built", "mode"),
+                                 ({"implicit": "x^60+y", "mode": "safe"}, "degree_too_high", "implicit"),
+                                 ({"implicit": "x^2", "mode": "exact"}, "invalid_value", "mode"),
                                  ({"implicit": "x^2", "scene": {}}, "not_built", "scene"),
                                  ({"implicit": "x^2+s"}, "unknown_variable", "implicit"),
                                  ({"implicit": "x^2", "box": [0, 0, 0, 1, 1]}, "invalid_box", "box")]:

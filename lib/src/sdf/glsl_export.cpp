@@ -3,6 +3,7 @@
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/sdf/fast_sdf.hpp"
 #include "implicitizer/sdf/glsl_name.hpp"
+#include "implicitizer/sdf/safe_sdf.hpp"
 
 namespace implicitizer {
 
@@ -14,10 +15,14 @@ SdfMode parse_sdf_mode(const std::string& text) {
 
 std::string sdf_glsl(const Polynomial& f, const SdfOptions& options) {
   check_glsl_name(options.name);
-  if (options.mode == SdfMode::safe) {
-    throw InputError("not_built", "mode 'safe' is not built yet (available: fast)").in_field("mode");
+  const std::string function = options.name + "_sdf";
+  switch (options.mode) {
+    case SdfMode::fast:
+      return FastSdf::build(f, options.box).to_glsl(function);
+    case SdfMode::safe:
+      return SafeSdf::build(f, options.box).to_glsl(function);
   }
-  return FastSdf::build(f, options.box).to_glsl(options.name + "_sdf");
+  throw InputError("invalid_value", "unknown mode").in_field("mode");
 }
 
 }  // namespace implicitizer

@@ -16,7 +16,10 @@ using Coefficients = std::map<std::int32_t, std::map<std::int32_t, std::map<std:
 
 class Emitter {
  public:
-  explicit Emitter(std::vector<ProgramStep>& steps) : steps_(steps) {}
+  Emitter(std::vector<ProgramStep>& steps, bool gradient) : gradient_(gradient), steps_(steps) {}
+
+  // Whether the derivative registers are computed (their steps emitted).
+  bool gradient() const { return gradient_; }
 
   void load(R target, double c) { steps_.push_back(step(Kind::load_constant, target, R::u, R::u, c)); }
   void copy(R target, R source) { steps_.push_back(step(Kind::copy, target, R::u, source, 0)); }
@@ -32,6 +35,7 @@ class Emitter {
   static ProgramStep step(Kind kind, R target, R by, R source, double c) {
     return ProgramStep{kind, target, by, source, c, static_cast<float>(c)};
   }
+  bool gradient_;
   std::vector<ProgramStep>& steps_;
 };
 
@@ -40,10 +44,10 @@ void emit_inner(Emitter& e, const std::map<std::int32_t, double>& ks) {
   auto it = ks.rbegin();
   std::int32_t k = it->first;
   e.load(R::a, it->second);
-  e.load(R::aw, 0.0);
+  if (e.gradient()) e.load(R::aw, 0.0);
   ++it;
   for (; k > 0; --k) {
-    e.multiply_add(R::aw, R::w, R::a);  // before a changes: (a·w + c)' = a'·w + a
+    if (e.gradient()) e.multiply_add(R::aw, R::w, R::a);  // before a changes: (a·w + c)' = a'·w + a
     if (it != ks.rend() && it->first == k - 1) {
       e.multiply_add_constant(R::a, R::w, it->second);
       ++it;
@@ -59,63 +63,79 @@ void emit_middle(Emitter& e, const std::map<std::int32_t, std::map<std::int32_t,
   std::int32_t j = it->first;
   emit_inner(e, it->second);
   e.copy(R::b, R::a);
-  e.copy(R::bw, R::aw);
-  e.load(R::bv, 0.0);
+  if (e.gradient()) {
+    e.copy(R::bw, R::aw);
+    e.load(R::bv, 0.0);
+  }
   ++it;
   for (; j > 0; --j) {
     const bool present = it != js.rend() && it->first == j - 1;
     if (present) emit_inner(e, it->second);
-    e.multiply_add(R::bv, R::v, R::b);
+    if (e.gradient()) e.multiply_add(R::bv, R::v, R::b);
     if (present) {
       e.multiply_add(R::b, R::v, R::a);
-      e.multiply_add(R::bw, R::v, R::aw);
+      if (e.gradient()) e.multiply_add(R::bw, R::v, R::aw);
       ++it;
     } else {
       e.multiply(R::b, R::v);
-      e.multiply(R::bw, R::v);
+      if (e.gradient()) e.multiply(R::bw, R::v);
     }
   }
 }
 
 }  // namespace
 
-PolynomialProgram PolynomialProgram::compile(const Polynomial& g) {
+PolynomialProgram PolynomialProgram::compile(const Polynomial& g, ProgramOutputs outputs) {
   Coefficients coefficients;
   PolynomialProgram program;
+  program.outputs_ = outputs;
+  const bool gradient = outputs == ProgramOutputs::value_and_gradient;
   for (std::size_t t = 0; t < g.num_terms(); ++t) {
     const double c = to_mpq(g.coefficient(t)).get_d();
     // Flushed as a GPU would flush it; both back ends then drop the same terms.
-    if (!(std::fabs(static_cast<float>(c)) >= FLT_MIN)) continue;
+    if (!(std::fabs(static_cast<float>(c)) >= FLT_MIN)) {
+      ++program.dropped_terms_;
+      continue;
+    }
     const std::vector<std::int32_t> e = g.exponents(t);
     coefficients[e[0]][e[1]][e[2]] = c;
     program.degree_ = std::max(program.degree_, e[0] + e[1] + e[2]);
   }
-  Emitter e(program.steps_);
+  Emitter e(program.steps_, gradient);
   if (coefficients.empty()) {
-    for (R r : {R::g, R::gu, R::gv, R::gw}) e.load(r, 0.0);
+    e.load(R::g, 0.0);
+    if (gradient) {
+      for (R r : {R::gu, R::gv, R::gw}) e.load(r, 0.0);
+    }
     return program;
   }
   auto it = coefficients.rbegin();
   std::int32_t i = it->first;
   emit_middle(e, it->second);
   e.copy(R::g, R::b);
-  e.copy(R::gv, R::bv);
-  e.copy(R::gw, R::bw);
-  e.load(R::gu, 0.0);
+  if (gradient) {
+    e.copy(R::gv, R::bv);
+    e.copy(R::gw, R::bw);
+    e.load(R::gu, 0.0);
+  }
   ++it;
   for (; i > 0; --i) {
     const bool present = it != coefficients.rend() && it->first == i - 1;
     if (present) emit_middle(e, it->second);
-    e.multiply_add(R::gu, R::u, R::g);
+    if (gradient) e.multiply_add(R::gu, R::u, R::g);
     if (present) {
       e.multiply_add(R::g, R::u, R::b);
-      e.multiply_add(R::gv, R::u, R::bv);
-      e.multiply_add(R::gw, R::u, R::bw);
+      if (gradient) {
+        e.multiply_add(R::gv, R::u, R::bv);
+        e.multiply_add(R::gw, R::u, R::bw);
+      }
       ++it;
     } else {
       e.multiply(R::g, R::u);
-      e.multiply(R::gv, R::u);
-      e.multiply(R::gw, R::u);
+      if (gradient) {
+        e.multiply(R::gv, R::u);
+        e.multiply(R::gw, R::u);
+      }
     }
   }
   return program;
@@ -142,8 +162,10 @@ std::string format_glsl_float(float x) {
 }
 
 std::string PolynomialProgram::to_glsl(const std::string& indent) const {
-  std::string out = indent + "float a = 0.0, aw = 0.0, b = 0.0, bv = 0.0, bw = 0.0;\n" + indent +
-                    "float g = 0.0, gu = 0.0, gv = 0.0, gw = 0.0;\n";
+  std::string out = outputs_ == ProgramOutputs::value
+                        ? indent + "float a = 0.0, b = 0.0, g = 0.0;\n"
+                        : indent + "float a = 0.0, aw = 0.0, b = 0.0, bv = 0.0, bw = 0.0;\n" + indent +
+                              "float g = 0.0, gu = 0.0, gv = 0.0, gw = 0.0;\n";
   for (const ProgramStep& s : steps_) {
     const std::string t = register_name(s.target);
     out += indent + t + " = ";

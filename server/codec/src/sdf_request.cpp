@@ -8,6 +8,7 @@
 #include "implicitizer/sdf/fast_sdf.hpp"
 #include "implicitizer/sdf/glsl_export.hpp"
 #include "implicitizer/sdf/glsl_name.hpp"
+#include "implicitizer/sdf/safe_sdf.hpp"
 
 namespace implicitizer {
 namespace {
@@ -44,9 +45,6 @@ SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& caller_bud
   Budget budget = caller_budget;
   if (request.timeout_seconds) budget.set_timeout(*request.timeout_seconds);
   const SdfMode mode = parse_sdf_mode(request.mode);
-  if (mode == SdfMode::safe) {
-    throw InputError("not_built", "mode 'safe' is not built yet (available: fast)").in_field("mode");
-  }
   check_glsl_name(request.name);
   const RingPtr ring = Ring::make({"x", "y", "z"});
   SceneBox box = SceneBox::default_box();
@@ -64,13 +62,14 @@ SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& caller_bud
     throw e.in_field("implicit");
   }
   SdfAnswer answer;
-  try {
-    answer.glsl = FastSdf::build(f, box, budget).to_glsl(request.name + "_sdf");
-  } catch (const InputError& e) {
-    throw e.code() == "constant_polynomial" ? e.in_field("implicit") : e;
-  }
   answer.function = request.name + "_sdf";
-  answer.mode = "fast";
+  try {
+    answer.glsl = mode == SdfMode::safe ? SafeSdf::build(f, box, budget).to_glsl(answer.function)
+                                        : FastSdf::build(f, box, budget).to_glsl(answer.function);
+  } catch (const InputError& e) {
+    throw e.code() == "constant_polynomial" || e.code() == "degree_too_high" ? e.in_field("implicit") : e;
+  }
+  answer.mode = mode == SdfMode::safe ? "safe" : "fast";
   for (std::size_t i = 0; i < 3; ++i) {
     answer.box[i] = nearest_double(box.lo[i]);
     answer.box[i + 3] = nearest_double(box.hi[i]);

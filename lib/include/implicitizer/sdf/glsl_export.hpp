@@ -15,7 +15,7 @@ namespace implicitizer {
 /// How the distance is computed.
 enum class SdfMode {
   fast,  ///< F/|∇F| (fast_sdf.hpp): first order, not a bound
-  safe,  ///< a provable lower bound (not built yet)
+  safe,  ///< a proven lower bound of the distance (safe_sdf.hpp)
 };
 
 /// Parses "fast" or "safe"; throws InputError `invalid_value` (field "mode") otherwise.
@@ -31,7 +31,7 @@ struct SdfOptions {
 /// The GLSL source of `float NAME_sdf(vec3 p)` for the surface f = 0 (f in a ring
 /// with exactly the variables x, y, z). Throws InputError: `invalid_name` (field
 /// "name", see check_glsl_name), `invalid_box` (field "box"),
-/// `constant_polynomial`, `not_built` (field "mode": mode safe).
+/// `constant_polynomial`, `degree_too_high` (mode safe: see SafeSdf::build).
 std::string sdf_glsl(const Polynomial& f, const SdfOptions& options);
 
 }  // namespace implicitizer

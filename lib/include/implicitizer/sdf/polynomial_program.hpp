@@ -47,6 +47,14 @@ struct ProgramStep {
   float constant_float = 0;  ///< float(constant): what the GLSL states
 };
 
+/// What a program computes. Safe mode (safe_sdf.hpp) evaluates the majorant
+/// several times per point but needs its gradient only once, so a value-only
+/// program (about a third of the steps) serves the other evaluations.
+enum class ProgramOutputs : std::uint8_t {
+  value_and_gradient,  ///< g and gu, gv, gw
+  value,               ///< g only; the gradient registers stay 0
+};
+
 /// The value of G and its partial derivatives.
 template <typename T>
 struct ValueAndGradient {
@@ -61,13 +69,21 @@ class PolynomialProgram {
   /// ring order), whose coefficients should be at most 1 in magnitude (see
   /// frame_polynomial). Coefficients are rounded to float; those that become
   /// subnormal or 0 (below 1.2e-38 in magnitude) are dropped, as GPUs flush
-  /// subnormals. Precondition: g is not zero.
-  static PolynomialProgram compile(const Polynomial& g);
+  /// subnormals. With ProgramOutputs::value only the steps of G's value are
+  /// emitted: the same steps, in the same order, as the value part of the full
+  /// program, so both round identically. Precondition: g is not zero.
+  static PolynomialProgram compile(const Polynomial& g,
+                                   ProgramOutputs outputs = ProgramOutputs::value_and_gradient);
 
   /// The steps, in execution order.
   const std::vector<ProgramStep>& steps() const { return steps_; }
   /// Total degree of the compiled polynomial.
   std::int32_t degree() const { return degree_; }
+  /// What the program computes.
+  ProgramOutputs outputs() const { return outputs_; }
+  /// How many nonzero coefficients of g were dropped because their float is not
+  /// a normal number (an error bound must account for them: safe_sdf.hpp).
+  std::size_t dropped_terms() const { return dropped_terms_; }
 
   /// Runs the steps in T (float or double). Float runs use constant_float, double
   /// runs constant.
@@ -102,9 +118,10 @@ class PolynomialProgram {
   }
 
   /// GLSL statements that run the steps: one declaration of the registers a … gw
-  /// (initialised to 0.0), then one statement per step, each line starting with
-  /// `indent`. The inputs must be float variables named u, v, w in scope; the
-  /// result is left in g, gu, gv, gw.
+  /// (a, b, g for a value-only program; initialised to 0.0), then one statement
+  /// per step, each line starting with `indent`. The inputs must be float
+  /// variables named u, v, w in scope; the result is left in g, gu, gv, gw (g).
+  /// Two programs in one function need a block `{ ... }` each.
   std::string to_glsl(const std::string& indent) const;
 
  private:
@@ -120,6 +137,8 @@ class PolynomialProgram {
 
   std::vector<ProgramStep> steps_;
   std::int32_t degree_ = 0;
+  ProgramOutputs outputs_ = ProgramOutputs::value_and_gradient;
+  std::size_t dropped_terms_ = 0;
 };
 
 /// `x` as a GLSL float literal that reads back as exactly x: 9 significant digits

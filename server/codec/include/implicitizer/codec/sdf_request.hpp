@@ -3,7 +3,7 @@
 /// A distance-function request as the outside world states it (the contract's
 /// `POST /v1/sdf` body, or `implicitizer sdf`'s arguments), its answer, and the one
 /// function that computes it, shared by the CLI and (later) the HTTP handler.
-/// Only `implicit` leaves and mode `fast` are built; scenes and `safe` are refused.
+/// Only `implicit` surfaces are built (modes `fast` and `safe`); scenes are refused.
 
 #include <array>
 #include <cstdint>
@@ -31,7 +31,7 @@ struct SdfRequest {
 struct SdfAnswer {
   std::string glsl;               ///< the source of `float NAME_sdf(vec3 p)`
   std::string function;           ///< NAME_sdf
-  std::string mode;               ///< "fast"
+  std::string mode;               ///< "fast" or "safe"
   std::array<double, 6> box{};    ///< the box used, rounded to double
   std::int32_t degree = 0;        ///< total degree of F
 };
@@ -39,9 +39,10 @@ struct SdfAnswer {
 /// Answers `request` under `budget` (whose deadline the request's timeout, when
 /// present, replaces). Throws InputError with its field
 /// set: parse errors and `unknown_variable` ("implicit": only x, y, z may occur),
-/// `constant_polynomial` ("implicit"), `invalid_value` ("mode": neither fast nor
-/// safe), `not_built` ("mode": safe), `invalid_box` ("box": not six numbers, or
-/// hi <= lo), `invalid_name` ("name").
+/// `constant_polynomial` ("implicit"), `degree_too_high` ("implicit": mode safe,
+/// terms beyond fp32's range, see SafeSdf::build), `invalid_value` ("mode": neither
+/// fast nor safe), `invalid_box` ("box": not six numbers, or hi <= lo),
+/// `invalid_name` ("name").
 SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& budget = Budget());
 
 }  // namespace implicitizer
