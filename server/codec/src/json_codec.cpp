@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "implicitizer/codec/json_depth.hpp"
 #include "implicitizer/polynomial/printer.hpp"
 
 namespace implicitizer {
@@ -21,34 +22,8 @@ using Writer = rapidjson::Writer<rapidjson::StringBuffer>;
 
 // ---- decoding -------------------------------------------------------------
 
-// Rejects nesting deeper than `max_depth` before RapidJSON sees the text. Strings are
-// skipped (with their escapes) so that brackets inside them do not count. A text that
-// is not JSON may be judged only roughly here; the parser reports it properly after.
-void check_depth(std::string_view body, std::size_t max_depth) {
-  std::size_t depth = 0;
-  bool in_string = false;
-  for (std::size_t i = 0; i < body.size(); ++i) {
-    const char c = body[i];
-    if (in_string) {
-      if (c == '\\') {
-        ++i;
-      } else if (c == '"') {
-        in_string = false;
-      }
-    } else if (c == '"') {
-      in_string = true;
-    } else if (c == '[' || c == '{') {
-      if (++depth > max_depth) {
-        throw InputError("json_too_deep", "JSON nested deeper than " + std::to_string(max_depth) + " levels", i);
-      }
-    } else if ((c == ']' || c == '}') && depth > 0) {
-      --depth;
-    }
-  }
-}
-
 rapidjson::Document parse_object(std::string_view body, const JsonLimits& limits) {
-  check_depth(body, limits.max_depth);
+  check_json_depth(body, limits.max_depth);
   rapidjson::Document document;
   // Iterative parsing: no recursion whatever the input; invalid UTF-8 is a syntax
   // error. No kParseFullPrecisionFlag: Debian's RapidJSON 1.1.0 reads out of bounds

@@ -1,0 +1,105 @@
+#pragma once
+/// \file
+/// The leaves of a scene that are polynomial surfaces: an implicit equation F = 0, or a
+/// parametric surface implicitized by the library (implicitize.hpp). Both become the
+/// distance function of mode fast (FastSdf: F/|∇F|) or safe (SafeSdf: a lower bound)
+/// of F = 0 in the leaf's frame box, named NAME_leaf<k> in the GLSL.
+///
+/// Trimming. A parametric leaf with a parameter domain D is the patch X(D), not the
+/// whole algebraic surface: bound_patch() (patch_bounds.hpp) gives an exact box B ⊇ X(D)
+/// (its corners rounded outwards to float), the frame box is B padded by 1e-3 of its
+/// largest side on every side, and the leaf's value is the unsigned trimmed sheet
+///     t(p) = max(|d(p)|, |max(lo − p, p − hi, 0)|),
+/// the second term being the distance from p to B (0 inside). Its zero set is exactly
+/// {F = 0} ∩ B: t = 0 iff d = 0 and p ∈ B. It is a lower bound of the distance to
+/// Z ∩ B whenever |d| is one of the distance to Z = {F = 0}, because
+/// dist(p, Z ∩ B) ≥ max(dist(p, Z), dist(p, B)). A trimmed leaf is a sheet: it has
+/// no inside (t ≥ 0 everywhere), so it is meant for union and intersection; as the
+/// subtrahend of a difference it removes nothing. B contains the patch but may
+/// contain more of Z (other sheets of the surface, or the rest of a piece whose
+/// image is not box-shaped): trimming to a box is what a box can do.
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include "implicitizer/core/budget.hpp"
+#include "implicitizer/implicitization/patch_bounds.hpp"
+#include "implicitizer/polynomial/polynomial.hpp"
+#include "implicitizer/scene/scene_node.hpp"
+#include "implicitizer/scene/vec3.hpp"
+#include "implicitizer/sdf/fast_sdf.hpp"
+#include "implicitizer/sdf/glsl_export.hpp"
+#include "implicitizer/sdf/safe_sdf.hpp"
+#include "implicitizer/sdf/scene_frame.hpp"
+
+namespace implicitizer {
+
+/// The trimmed sheet max(|d|, distance from p to [lo, hi]), the distance being
+/// |max(lo − p, p − hi, 0)| component by component.
+template <typename T>
+T trim_to_box(const Vec3<T>& p, const Vec3<T>& lo, const Vec3<T>& hi, T d) {
+  const Vec3<T> q{std::max(lo.x - p.x, p.x - hi.x), std::max(lo.y - p.y, p.y - hi.y), std::max(lo.z - p.z, p.z - hi.z)};
+  return std::max(std::abs(d), length(max(q, T(0))));
+}
+/// `float PREFIX_trim(vec3 p, vec3 lo, vec3 hi, float d)`.
+std::string trim_glsl(const std::string& prefix);
+
+/// One compiled polynomial leaf.
+class PolynomialLeaf {
+ public:
+  /// Builds the leaf of `source` (kind implicit or parametric; see scene_node.hpp)
+  /// under `budget`: parses (ring x, y, z), implicitizes (parametric), bounds the
+  /// patch (with a domain) and compiles the distance of `mode` in the leaf's box
+  /// (source.box, else `default_box`, else, trimmed, the padded patch box).
+  /// Errors are InputError with field `field` + ".equation" / ".x" / ".domain" / … :
+  /// parse errors, `constant_polynomial`, `invalid_box`, `degree_too_high` (safe),
+  /// `invalid_domain`, `unbounded_patch`, `no_single_equation` (the image is not a
+  /// surface); LimitExceeded from the budget.
+  static PolynomialLeaf build(NodeKind kind, const PolynomialLeafSource& source, const SceneBox& default_box,
+                              SdfMode mode, const Budget& budget, const std::string& field);
+
+  /// The leaf's value at p: d (untrimmed, signed) or the trimmed sheet.
+  template <typename T>
+  T evaluate(const Vec3<T>& p) const {
+    const T d = fast_ ? fast_->evaluate<T>(p.x, p.y, p.z) : safe_->evaluate<T>(p.x, p.y, p.z);
+    if (!trimmed_) return d;
+    if constexpr (sizeof(T) == sizeof(float)) {
+      return trim_to_box(p, lo_float_, hi_float_, d);
+    } else {
+      return trim_to_box(p, Vec3<T>{lo_.x, lo_.y, lo_.z}, Vec3<T>{hi_.x, hi_.y, hi_.z}, d);
+    }
+  }
+
+  /// `float FUNCTION(vec3 p)`: the distance of F = 0 before trimming (the scene's
+  /// GLSL applies PREFIX_trim with trim_lo/trim_hi when trimmed()).
+  std::string to_glsl(const std::string& function) const {
+    return fast_ ? fast_->to_glsl(function) : safe_->to_glsl(function);
+  }
+
+  /// Whether the leaf is a trimmed sheet.
+  bool trimmed() const { return trimmed_; }
+  /// The trimming box's corners as floats (rounded outwards from the exact bound).
+  const Vec3<float>& trim_lo() const { return lo_float_; }
+  /// See trim_lo().
+  const Vec3<float>& trim_hi() const { return hi_float_; }
+  /// The implicit equation F (in x, y, z).
+  const Polynomial& equation() const { return equation_; }
+  /// The frame box the distance is computed in.
+  const SceneBox& frame_box() const { return frame_box_; }
+
+ private:
+  explicit PolynomialLeaf(Polynomial equation) : equation_(std::move(equation)) {}
+
+  Polynomial equation_;
+  // Exactly one is set, by the mode (a branch per evaluation is cheaper than
+  // std::visit's dispatch and reads as plainly).
+  std::optional<FastSdf> fast_;
+  std::optional<SafeSdf> safe_;
+  SceneBox frame_box_;
+  bool trimmed_ = false;
+  Vec3<double> lo_, hi_;
+  Vec3<float> lo_float_, hi_float_;
+};
+
+}  // namespace implicitizer

@@ -1,0 +1,156 @@
+#include "implicitizer/scene/polynomial_leaf.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/implicitization/implicitize.hpp"
+#include "implicitizer/implicitization/parametrization.hpp"
+#include "implicitizer/polynomial/parser.hpp"
+#include "implicitizer/polynomial/ring.hpp"
+#include "implicitizer/scene/primitives.hpp"
+
+namespace implicitizer {
+namespace {
+
+// The largest F ≤ q and the smallest F ≥ q (F = float or double): mpq_get_d truncates
+// toward zero, so step once or twice to the right side.
+template <typename F>
+F round_down(const Rational& q) {
+  const mpq_class exact = to_mpq(q);
+  F x = static_cast<F>(exact.get_d());
+  while (mpq_class(static_cast<double>(x)) > exact) x = std::nextafter(x, -std::numeric_limits<F>::infinity());
+  return x;
+}
+
+template <typename F>
+F round_up(const Rational& q) {
+  const mpq_class exact = to_mpq(q);
+  F x = static_cast<F>(exact.get_d());
+  while (mpq_class(static_cast<double>(x)) < exact) x = std::nextafter(x, std::numeric_limits<F>::infinity());
+  return x;
+}
+
+// Rethrows an InputError of a sub-field ("x", "domain", or "" for the whole text) as
+// one of the leaf at `field`.
+InputError at_field(const InputError& e, const std::string& field, const std::string& sub) {
+  const std::string& part = e.field().empty() ? sub : e.field();
+  return e.in_field(part.empty() ? field : field + "." + part);
+}
+
+}  // namespace
+
+std::string trim_glsl(const std::string& prefix) {
+  return "float " + prefix +
+         "_trim(vec3 p, vec3 lo, vec3 hi, float d) {\n"
+         "  vec3 q = max(lo - p, p - hi);\n"
+         "  vec3 m = max(q, 0.0);\n"
+         "  return max(abs(d), " +
+         glsl_length("m") +
+         ");\n"
+         "}\n";
+}
+
+PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& source, const SceneBox& default_box,
+                                     SdfMode mode, const Budget& budget, const std::string& field) {
+  const RingPtr ring = space_ring();
+  Polynomial f(ring);
+  std::optional<PatchBounds> bounds;
+  if (kind == NodeKind::implicit) {
+    try {
+      f = parse_polynomial(source.equation, ring, budget);
+    } catch (const InputError& e) {
+      throw at_field(e, field, "equation");
+    }
+  } else {
+    Parametrization parametrization;
+    try {
+      parametrization = parse_parametrization(source.coordinates[0], source.coordinates[1], source.coordinates[2],
+                                              source.parameter_names, budget);
+    } catch (const InputError& e) {
+      throw at_field(e, field, "x");
+    }
+    if (!source.domain.empty()) {
+      ParameterDomain domain;
+      domain.intervals = source.domain;
+      try {
+        bounds = bound_patch(parametrization, domain, budget);
+      } catch (const InputError& e) {
+        throw at_field(e, field, "domain");
+      }
+    }
+    ImplicitizeOptions options;
+    options.groebner.budget = budget;
+    try {
+      f = implicitize(parametrization, options).implicit;
+    } catch (const NoSingleEquation& e) {
+      throw InputError(e.code(), std::string("the parametrization has no single implicit equation: ") + e.what())
+          .in_field(field);
+    } catch (const InputError& e) {
+      throw at_field(e, field, "x");
+    }
+  }
+  if (f.is_constant()) {
+    throw InputError("constant_polynomial", "a constant polynomial has no surface")
+        .in_field(field + (kind == NodeKind::implicit ? ".equation" : ""));
+  }
+
+  SceneBox frame_box = source.box ? *source.box : default_box;
+  Vec3<double> lo, hi;
+  Vec3<float> lo_float, hi_float;
+  if (bounds) {
+    // Pad by 1e-3 of the largest side so that the patch never lies on the frame's
+    // edge; a patch whose box is a point is not a surface piece.
+    Rational largest(0);
+    for (std::size_t i = 0; i < 3; ++i) {
+      const Rational side = bounds->hi[i] - bounds->lo[i];
+      if (side > largest) largest = side;
+    }
+    if (largest == Rational(0)) {
+      throw InputError("invalid_domain", "the domain's image is a single point").in_field(field + ".domain");
+    }
+    const Rational pad = largest / Rational(1000);
+    if (!source.box) {
+      for (std::size_t i = 0; i < 3; ++i) {
+        frame_box.lo[i] = bounds->lo[i] - pad;
+        frame_box.hi[i] = bounds->hi[i] + pad;
+      }
+    }
+    double* lo_d[3] = {&lo.x, &lo.y, &lo.z};
+    double* hi_d[3] = {&hi.x, &hi.y, &hi.z};
+    float* lo_f[3] = {&lo_float.x, &lo_float.y, &lo_float.z};
+    float* hi_f[3] = {&hi_float.x, &hi_float.y, &hi_float.z};
+    for (std::size_t i = 0; i < 3; ++i) {
+      *lo_d[i] = round_down<double>(bounds->lo[i]);
+      *hi_d[i] = round_up<double>(bounds->hi[i]);
+      *lo_f[i] = round_down<float>(bounds->lo[i]);
+      *hi_f[i] = round_up<float>(bounds->hi[i]);
+      if (!std::isfinite(*lo_f[i]) || !std::isfinite(*hi_f[i])) {
+        throw InputError("invalid_domain", "the patch's box exceeds float's range").in_field(field + ".domain");
+      }
+    }
+  }
+
+  PolynomialLeaf leaf(f);
+  try {
+    if (mode == SdfMode::safe) {
+      leaf.safe_ = SafeSdf::build(f, frame_box, budget);
+    } else {
+      leaf.fast_ = FastSdf::build(f, frame_box, budget);
+    }
+  } catch (const InputError& e) {
+    // invalid_box concerns the box; degree_too_high the equation.
+    throw at_field(e, field, e.code() == "invalid_box" ? "box" : (kind == NodeKind::implicit ? "equation" : ""));
+  }
+  leaf.frame_box_ = frame_box;
+  if (bounds) {
+    leaf.trimmed_ = true;
+    leaf.lo_ = lo;
+    leaf.hi_ = hi;
+    leaf.lo_float_ = lo_float;
+    leaf.hi_float_ = hi_float;
+  }
+  return leaf;
+}
+
+}  // namespace implicitizer

@@ -1,0 +1,60 @@
+#pragma once
+/// \file
+/// The JSON form of a scene (docs/sdf.md, "Scenes"): a tree of objects
+///     {"type": KIND, PARAMETER: number | [x, y, z], ..., "name": N?, "uniforms": [P..]?,
+///      "children": [NODE, NODE, ...] (union, intersection, difference, smooth_*)
+///      | "child": NODE (translate, rotate, scale, ...)}
+/// with the leaves implicit {"equation": F, "box": [x0, y0, z0, x1, y1, z1]?} and
+/// parametric {"x": X, "y": Y, "z": Z, "parameters": [..]?, "domain": [[lo, hi], ..]?,
+/// "box": [..]?} (box and domain bounds: numbers or exact strings like "1/3").
+/// The numeric parameters of each kind are read from the kind table (scene_node.hpp),
+/// so a new kind needs no code here unless it has non-numeric fields.
+///
+/// Strict like the rest of the codec: unknown keys and keys given twice are refused
+/// (a misspelt "raduis" must not fall back to a default). Errors are InputError
+/// with the JSON path as field ("scene.children[1].radius"): `invalid_scene` (not
+/// an object, unknown or repeated key, missing "type", children where none belong),
+/// `unknown_node_type`, `missing_parameter`, `invalid_value` (wrong JSON type or
+/// length), `invalid_name` (a name that is not a string), `scene_too_large`
+/// (more than kMaxSceneNodes nodes or kMaxSceneDepth levels; checked while reading,
+/// so no input recurses deeper). compile_scene() checks the rest (ranges, names,
+/// uniforms, safety).
+///
+/// Entry points for the server and the command line:
+///     SceneNode root = decode_scene(document["scene"], "scene");   // inside the codec
+///     SceneNode root = parse_scene_json(text);                      // a whole JSON text
+///     CompiledScene scene = compile_scene(root, options, budget);
+///     std::string uniforms = encode_scene_uniforms(scene);          // for the response
+
+#include <rapidjson/fwd.h>
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include "implicitizer/scene/compiled_scene.hpp"
+#include "implicitizer/scene/scene_node.hpp"
+
+namespace implicitizer {
+
+/// The deepest JSON nesting a scene of kMaxSceneDepth levels needs: an object and a
+/// "children" array per level, plus the innermost parameter arrays (domain pairs).
+/// A request decoder that embeds a scene must allow at least this much nesting.
+inline constexpr std::size_t kMaxSceneJsonDepth = 2 * kMaxSceneDepth + 4;
+
+/// Reads the scene node `value` found at JSON path `path` (e.g. "scene"). Throws
+/// InputError as described in the file comment.
+SceneNode decode_scene(const rapidjson::Value& value, const std::string& path);
+
+/// Parses `text` (one JSON object, the scene's root node) and decodes it with path
+/// `path`. Throws InputError `invalid_json` (with the byte offset), `json_too_deep`
+/// (nesting beyond kMaxSceneJsonDepth, refused before parsing), and the errors of
+/// decode_scene().
+SceneNode parse_scene_json(std::string_view text, const std::string& path = "scene");
+
+/// The uniforms of `scene` as a compact JSON array:
+/// `[{"name": "ball_radius", "type": "float", "default": 1.5}, {"name": ..., "type":
+/// "vec3", "default": [x, y, z]}]`, in declaration order.
+std::string encode_scene_uniforms(const CompiledScene& scene);
+
+}  // namespace implicitizer

@@ -1,0 +1,250 @@
+#include "implicitizer/codec/scene_json.hpp"
+
+#include <rapidjson/document.h>
+#include <rapidjson/error/en.h>
+#include <rapidjson/stringbuffer.h>
+#include <rapidjson/writer.h>
+
+#include <charconv>
+#include <cmath>
+#include <set>
+
+#include "implicitizer/codec/json_depth.hpp"
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/implicitization/implicitize.hpp"
+#include "implicitizer/polynomial/parser.hpp"
+
+namespace implicitizer {
+namespace {
+
+InputError invalid_scene(const std::string& message, const std::string& field) {
+  return InputError("invalid_scene", message).in_field(field);
+}
+
+InputError invalid_value(const std::string& message, const std::string& field) {
+  return InputError("invalid_value", message).in_field(field);
+}
+
+std::string read_string(const rapidjson::Value& v, const std::string& field, const char* code = "invalid_value") {
+  if (!v.IsString()) throw InputError(code, "'" + field + "' must be a string").in_field(field);
+  return std::string(v.GetString(), v.GetStringLength());
+}
+
+double read_number(const rapidjson::Value& v, const std::string& field) {
+  if (!v.IsNumber()) throw invalid_value("a number is expected", field);
+  return v.GetDouble();
+}
+
+// An exact number: a JSON number (its shortest round-trip decimal, so 0.1 means 1/10)
+// or a string holding a constant expression ("1/3", "2^-10", "1e-30").
+Rational read_exact(const rapidjson::Value& v, const std::string& field) {
+  std::string text;
+  if (v.IsNumber()) {
+    char buffer[64];
+    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, v.GetDouble());
+    if (error != std::errc()) throw invalid_value("unprintable number", field);
+    text.assign(buffer, end);
+  } else if (v.IsString()) {
+    text.assign(v.GetString(), v.GetStringLength());
+  } else {
+    throw invalid_value("a number (or an exact number as a string, e.g. \"1/3\") is expected", field);
+  }
+  Polynomial c(space_ring());
+  try {
+    c = parse_polynomial(text, space_ring());
+  } catch (const InputError&) {
+    throw invalid_value("'" + text + "' is not a number", field);
+  }
+  if (!c.is_constant()) throw invalid_value("'" + text + "' is not a number", field);
+  return c.is_zero() ? Rational(0) : c.coefficient(0);
+}
+
+std::vector<std::string> read_strings(const rapidjson::Value& v, const std::string& field) {
+  if (!v.IsArray()) throw invalid_value("an array of strings is expected", field);
+  std::vector<std::string> out;
+  for (rapidjson::SizeType i = 0; i < v.Size(); ++i) {
+    out.push_back(read_string(v[i], field + "[" + std::to_string(i) + "]"));
+  }
+  return out;
+}
+
+SceneBox read_box(const rapidjson::Value& v, const std::string& field) {
+  if (!v.IsArray() || v.Size() != 6) throw invalid_value("a box is six numbers [x0, y0, z0, x1, y1, z1]", field);
+  SceneBox box;
+  for (rapidjson::SizeType i = 0; i < 3; ++i) {
+    box.lo[i] = read_exact(v[i], field + "[" + std::to_string(i) + "]");
+    box.hi[i] = read_exact(v[i + 3], field + "[" + std::to_string(i + 3) + "]");
+  }
+  return box;
+}
+
+std::vector<std::pair<Rational, Rational>> read_domain(const rapidjson::Value& v, const std::string& field) {
+  if (!v.IsArray()) throw invalid_value("a domain is an array of [lo, hi] pairs, one per parameter", field);
+  std::vector<std::pair<Rational, Rational>> out;
+  for (rapidjson::SizeType i = 0; i < v.Size(); ++i) {
+    const std::string item = field + "[" + std::to_string(i) + "]";
+    if (!v[i].IsArray() || v[i].Size() != 2) throw invalid_value("an interval is a pair [lo, hi]", item);
+    out.emplace_back(read_exact(v[i][0], item + "[0]"), read_exact(v[i][1], item + "[1]"));
+  }
+  return out;
+}
+
+ParameterValue read_parameter(const rapidjson::Value& v, const ParameterSpec& spec, const std::string& field) {
+  if (spec.type != ParameterType::vec3) {
+    const double x = read_number(v, field);
+    if (spec.type == ParameterType::count && !v.IsInt()) throw invalid_value("an integer is expected", field);
+    return ParameterValue(x);
+  }
+  if (!v.IsArray() || v.Size() != 3) throw invalid_value("a vec3 is an array of three numbers", field);
+  return ParameterValue(Vec3<double>{read_number(v[0], field + "[0]"), read_number(v[1], field + "[1]"),
+                                     read_number(v[2], field + "[2]")});
+}
+
+class SceneDecoder {
+ public:
+  SceneNode decode(const rapidjson::Value& value, const std::string& path, std::size_t depth);
+
+ private:
+  std::size_t nodes_ = 0;
+};
+
+SceneNode SceneDecoder::decode(const rapidjson::Value& value, const std::string& path, std::size_t depth) {
+  // Counted before reading the children, so neither count nor depth can grow past
+  // the limits however the text is shaped.
+  if (++nodes_ > kMaxSceneNodes) {
+    throw InputError("scene_too_large", "a scene has at most " + std::to_string(kMaxSceneNodes) + " nodes")
+        .in_field(path);
+  }
+  if (depth > kMaxSceneDepth) {
+    throw InputError("scene_too_large", "a scene is at most " + std::to_string(kMaxSceneDepth) + " levels deep")
+        .in_field(path);
+  }
+  if (!value.IsObject()) throw invalid_scene("a scene node is a JSON object with a \"type\"", path);
+  std::set<std::string> keys;
+  for (auto m = value.MemberBegin(); m != value.MemberEnd(); ++m) {
+    const std::string key(m->name.GetString(), m->name.GetStringLength());
+    if (!keys.insert(key).second) throw invalid_scene("key '" + key + "' is given twice", path + "." + key);
+  }
+  const auto type = value.FindMember("type");
+  if (type == value.MemberEnd()) throw invalid_scene("a scene node needs a \"type\"", path + ".type");
+  const std::string type_name = read_string(type->value, path + ".type", "invalid_scene");
+  const NodeKindInfo* info = find_node_kind(type_name);
+  if (info == nullptr) {
+    std::string known;
+    for (const NodeKindInfo& k : node_kinds()) known += (known.empty() ? "" : ", ") + std::string(k.type_name);
+    throw InputError("unknown_node_type", "unknown node type '" + type_name + "' (known: " + known + ")")
+        .in_field(path + ".type");
+  }
+
+  SceneNode node;
+  node.kind = info->kind;
+  const bool implicit = info->kind == NodeKind::implicit, parametric = info->kind == NodeKind::parametric;
+  for (auto m = value.MemberBegin(); m != value.MemberEnd(); ++m) {
+    const std::string key(m->name.GetString(), m->name.GetStringLength());
+    const std::string field = path + "." + key;
+    const rapidjson::Value& v = m->value;
+    if (key == "type") continue;
+    if (key == "name") {
+      node.name = read_string(v, field, "invalid_name");
+    } else if (key == "uniforms") {
+      node.uniforms = read_strings(v, field);
+    } else if (key == "children" && info->arity == NodeArity::nary) {
+      if (!v.IsArray()) throw invalid_scene("\"children\" is an array of nodes", field);
+      for (rapidjson::SizeType i = 0; i < v.Size(); ++i) {
+        node.children.push_back(decode(v[i], field + "[" + std::to_string(i) + "]", depth + 1));
+      }
+    } else if (key == "child" && info->arity == NodeArity::unary) {
+      node.children.push_back(decode(v, field, depth + 1));
+    } else if (implicit && key == "equation") {
+      node.leaf.equation = read_string(v, field);
+    } else if (parametric && (key == "x" || key == "y" || key == "z")) {
+      node.leaf.coordinates[static_cast<std::size_t>(key[0] - 'x')] = read_string(v, field);
+    } else if (parametric && key == "parameters") {
+      node.leaf.parameter_names = read_strings(v, field);
+    } else if (parametric && key == "domain") {
+      node.leaf.domain = read_domain(v, field);
+    } else if ((implicit || parametric) && key == "box") {
+      node.leaf.box = read_box(v, field);
+    } else {
+      const ParameterSpec* spec = nullptr;
+      for (const ParameterSpec& p : info->parameters) {
+        if (p.name == key) spec = &p;
+      }
+      if (spec == nullptr) {
+        std::string allowed = "type, name, uniforms";
+        if (info->arity == NodeArity::nary) allowed += ", children";
+        if (info->arity == NodeArity::unary) allowed += ", child";
+        if (implicit) allowed += ", equation, box";
+        if (parametric) allowed += ", x, y, z, parameters, domain, box";
+        for (const ParameterSpec& p : info->parameters) allowed += ", " + std::string(p.name);
+        throw invalid_scene("a " + type_name + " has no key '" + key + "' (allowed: " + allowed + ")", field);
+      }
+      node.parameters.emplace_back(key, read_parameter(v, *spec, field));
+    }
+  }
+  // Required fields the table does not list.
+  if (info->arity == NodeArity::nary && !value.HasMember("children")) {
+    throw InputError("missing_parameter", "a " + type_name + " needs \"children\"").in_field(path + ".children");
+  }
+  if (info->arity == NodeArity::unary && !value.HasMember("child")) {
+    throw InputError("missing_parameter", "a " + type_name + " needs \"child\"").in_field(path + ".child");
+  }
+  if (implicit && !value.HasMember("equation")) {
+    throw InputError("missing_parameter", "an implicit leaf needs \"equation\"").in_field(path + ".equation");
+  }
+  if (parametric) {
+    for (const char* axis : {"x", "y", "z"}) {
+      if (!value.HasMember(axis)) {
+        throw InputError("missing_parameter", std::string("a parametric leaf needs \"") + axis + "\"")
+            .in_field(path + "." + axis);
+      }
+    }
+  }
+  return node;
+}
+
+}  // namespace
+
+SceneNode decode_scene(const rapidjson::Value& value, const std::string& path) {
+  return SceneDecoder().decode(value, path, 1);
+}
+
+SceneNode parse_scene_json(std::string_view text, const std::string& path) {
+  check_json_depth(text, kMaxSceneJsonDepth);
+  rapidjson::Document document;
+  document.Parse<rapidjson::kParseIterativeFlag | rapidjson::kParseValidateEncodingFlag>(text.data(), text.size());
+  if (document.HasParseError()) {
+    throw InputError("invalid_json",
+                     std::string("invalid JSON: ") + rapidjson::GetParseError_En(document.GetParseError()),
+                     document.GetErrorOffset());
+  }
+  return decode_scene(document, path);
+}
+
+std::string encode_scene_uniforms(const CompiledScene& scene) {
+  rapidjson::StringBuffer buffer;
+  rapidjson::Writer<rapidjson::StringBuffer> w(buffer);
+  w.StartArray();
+  for (const SceneUniform& u : scene.uniforms()) {
+    w.StartObject();
+    w.Key("name");
+    w.String(u.name.c_str(), static_cast<rapidjson::SizeType>(u.name.size()));
+    w.Key("type");
+    w.String(u.type == ParameterType::vec3 ? "vec3" : "float");
+    w.Key("default");
+    if (u.type == ParameterType::vec3) {
+      w.StartArray();
+      w.Double(u.default_value.x);
+      w.Double(u.default_value.y);
+      w.Double(u.default_value.z);
+      w.EndArray();
+    } else {
+      w.Double(u.default_value.x);
+    }
+    w.EndObject();
+  }
+  w.EndArray();
+  return buffer.GetString();
+}
+
+}  // namespace implicitizer
