@@ -19,7 +19,7 @@ commands:
   implicitizer groebner [--vars x,y,z] [--order lex|grlex|grevlex] [--weights 1,2,3]
                [--eliminate s,t] [--timeout SECONDS] [--json] F [F ...]
   implicitizer resultant --var t [--timeout SECONDS] [--max-terms N] [--json] F G
-  implicitizer sdf --implicit E [--mode fast] [--box x0,y0,z0,x1,y1,z1] [--name NAME] [--json]
+  implicitizer sdf (--implicit E | --scene FILE.json) [--mode fast|safe] [--box x0,y0,z0,x1,y1,z1] [--name NAME] [--json]
   implicitize and groebner also take --strategy auto|normal|sugar,
   --criteria gm|seed|product|none, --max-terms N
 
@@ -112,14 +112,18 @@ exit status: 0 success, 2 usage error, 3 invalid input (parse error, unknown
 variable), 5 time or size limit.
 )";
 
-const char* const kSdfHelp = R"(usage: implicitizer sdf --implicit E [OPTIONS]
+const char* const kSdfHelp = R"(usage: implicitizer sdf (--implicit E | --scene FILE.json) [OPTIONS]
 
 Prints GLSL source defining float NAME_sdf(vec3 p): a distance estimate of the
 surface E = 0, negative where E < 0, evaluated in fp32 in a frame centred and scaled
-to the scene box (docs/sdf.md). It compiles as GLSL ES 3.00 and as GLSL 330.
+to the scene box (docs/sdf.md), or of a scene (its uniforms declared above it, and
+only the helpers its nodes use). It compiles as GLSL ES 3.00 and as GLSL 330.
 
 options:
-  --implicit E          the polynomial F(x, y, z) (required; only x, y, z may occur)
+  --implicit E          the polynomial F(x, y, z) (only x, y, z may occur)
+  --scene FILE.json     a scene instead: a JSON tree of primitives, implicit and
+                        parametric leaves and operators (docs/sdf.md, "Scenes");
+                        one of --implicit and --scene is required
   --mode fast|safe      fast: F/|grad F|, first order, not a bound (default); safe: a
                         proven lower bound of the distance (sphere tracing never
                         crosses the surface; slower, 0 within fp32's resolution)
@@ -131,10 +135,13 @@ options:
   --json                print the JSON object POST /v1/sdf returns
   -h, --help            this text
 
---scene is not built yet (usage error).
-exit status: 0 success, 2 usage error, 3 invalid input (parse error, unknown
-variable, constant polynomial, invalid_box, invalid_name, degree_too_high: mode
-safe and terms beyond fp32's range).
+exit status: 0 success, 2 usage error (also: a scene file that cannot be read),
+3 invalid input (parse error, unknown variable, constant polynomial, invalid_box,
+invalid_name, degree_too_high: mode safe and terms beyond fp32's range; for scenes
+invalid_json, invalid_scene, unknown_node_type, missing_parameter, invalid_value,
+name_collision, unsafe_operator, repetition_overlap, unbounded_child,
+scene_too_large, invalid_domain, unbounded_patch), 4 a parametric leaf with no
+single equation, 5 time or size limit.
 )";
 
 }  // namespace implicitizer::cli

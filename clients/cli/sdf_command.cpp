@@ -1,17 +1,31 @@
 #include "sdf_command.hpp"
 
+#include <fstream>
 #include <iostream>
+#include <optional>
+#include <sstream>
 
 #include "arguments.hpp"
 #include "error_report.hpp"
 #include "help.hpp"
 #include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/codec/scene_json.hpp"
 #include "implicitizer/codec/sdf_request.hpp"
 
 namespace implicitizer::cli {
 namespace {
 
 constexpr const char* kCommand = "sdf";
+
+// A file that cannot be read is a usage error (exit 2): the command named it.
+std::string read_scene_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError("cannot read scene file '" + path + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw UsageError("cannot read scene file '" + path + "'");
+  return text.str();
+}
 
 constexpr OptionSpec kOptions[] = {{"implicit", true}, {"scene", true}, {"mode", true}, {"box", true},
                                    {"name", true},     {"json", false}, {"help", false}};
@@ -20,6 +34,7 @@ constexpr OptionSpec kOptions[] = {{"implicit", true}, {"scene", true}, {"mode",
 
 int run_sdf_command(std::span<const std::string> args) {
   SdfRequest request;
+  std::optional<std::string> scene_text;  // the --scene file's contents
   ErrorReport report;
   try {
     const Arguments arguments = parse_arguments(args, kOptions);
@@ -28,25 +43,31 @@ int run_sdf_command(std::span<const std::string> args) {
       return kExitOk;
     }
     report.json = arguments.has("json");
-    // Unbuilt features are usage errors (exit 2), whatever else is given, as for
-    // `implicitize --method interpolation`.
-    if (arguments.has("scene")) throw UsageError("--scene is not built yet (use --implicit E)");
     if (const auto mode = arguments.value("mode")) {
       if (*mode != "fast" && *mode != "safe") throw UsageError("unknown --mode '" + *mode + "' (expected fast or safe)");
       request.mode = *mode;
     }
     if (!arguments.positionals().empty()) throw UsageError("unexpected argument '" + arguments.positionals()[0] + "'");
     const auto implicit = arguments.value("implicit");
-    if (!implicit) throw UsageError("missing --implicit E (the surface E = 0)");
-    request.implicit = *implicit;
+    const auto scene = arguments.value("scene");
+    if (implicit && scene) throw UsageError("give --implicit E or --scene FILE.json, not both");
+    if (!implicit && !scene) throw UsageError("missing --implicit E (the surface E = 0) or --scene FILE.json");
+    if (implicit) request.implicit = *implicit;
+    if (scene) scene_text = read_scene_file(*scene);
     if (const auto box = arguments.value("box")) request.box = split_list(*box, "box");
     if (const auto name = arguments.value("name")) request.name = *name;
   } catch (const UsageError& e) {
     return report_usage_error(e.what(), kCommand);
   }
-  report.field_texts["implicit"] = request.implicit;
+  if (scene_text) {
+    report.field_texts["scene"] = *scene_text;
+  } else {
+    report.field_texts["implicit"] = request.implicit;
+  }
 
   return run_reporting_errors(report, [&] {
+    // The file's JSON errors are input errors (exit 3) with their byte offset.
+    if (scene_text) request.scene = parse_scene_json(*scene_text, "scene");
     const SdfAnswer answer = answer_sdf_request(request);
     if (report.json) {
       std::cout << encode_sdf_response(answer) << '\n';

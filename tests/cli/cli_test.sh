@@ -268,9 +268,33 @@ fi
 expect_json "sdf safe json" 0 'j["mode"] == "safe" and "float surface_sdf(vec3 p)" in j["glsl"]' \
   sdf --implicit "x^2+y^2+z^2-1" --mode safe --json
 expect_status "sdf safe degree too high" 3 "degree_too_high" sdf --implicit "x^60+y" --mode safe
-expect_status "sdf scene not built" 2 "not built yet" sdf --scene scene.json
+# Scenes (docs/sdf.md, "Scenes"): a file holding the JSON tree.
+cat >"$WORK/scene.json" <<'JSON'
+{"type": "smooth_union", "k": 0.3, "children": [
+  {"type": "sphere", "radius": 1, "name": "ball", "uniforms": ["radius"]},
+  {"type": "translate", "offset": [1.5, 0, 0], "child": {"type": "torus", "major": 1, "minor": 0.25}}]}
+JSON
+run sdf --scene "$WORK/scene.json" --name demo
+if [[ $(status) == 0 ]] && grep -q "^float demo_sdf(vec3 p) {" "$WORK/out" && grep -q "^uniform float ball_radius;" "$WORK/out" \
+  && grep -q "demo_torus" "$WORK/out" && ! grep -q "demo_box\|demo_leaf" "$WORK/out"; then pass; else
+  fail "sdf --scene prints demo_sdf with its uniform and only the helpers it uses"
+fi
+expect_json "sdf scene json" 0 'j["nodes"] == 4 and j["uniforms"] == [{"name": "ball_radius", "type": "float", "default": 1.0}] and j["leaves"] == []' \
+  sdf --scene "$WORK/scene.json" --json
+echo '{"type": "union", "children": [{"type": "sphere", "radius": 1}, {"type": "parametric", "x": "s", "y": "t", "z": "s*t", "domain": [[0, 1], [0, 1]]}]}' >"$WORK/patch.json"
+expect_json "sdf scene parametric leaf" 0 'j["mode"] == "safe" and j["leaves"] == [{"implicit": "x*y-z", "degree": 2, "trimmed": True}]' \
+  sdf --scene "$WORK/patch.json" --mode safe --json
+echo '{"type": "sphere", "raduis": 1}' >"$WORK/typo.json"
+expect_json "sdf scene unknown key" 3 'j["error"]["code"] == "invalid_scene" and j["error"]["field"] == "scene.raduis"' \
+  sdf --scene "$WORK/typo.json" --json
+echo '{"type": "sphere",' >"$WORK/broken.json"
+expect_status "sdf scene broken json" 3 "invalid_json" sdf --scene "$WORK/broken.json"
+echo '{"type": "smooth_union", "k": 0.1, "children": [{"type": "sphere", "radius": 1}, {"type": "implicit", "equation": "x^2+y^2-z"}]}' >"$WORK/unsafe.json"
+expect_status "sdf scene unsafe smooth" 3 "unsafe_operator" sdf --scene "$WORK/unsafe.json" --mode safe
+expect_status "sdf scene missing file" 2 "cannot read scene file" sdf --scene "$WORK/absent.json"
+expect_status "sdf implicit and scene" 2 "not both" sdf --implicit x --scene "$WORK/scene.json"
 expect_status "sdf unknown mode" 2 "unknown --mode" sdf --implicit "x" --mode exact
-expect_status "sdf missing implicit" 2 "missing --implicit" sdf
+expect_status "sdf missing input" 2 "missing --implicit" sdf
 expect_status "sdf injected name" 3 "invalid_name" sdf --implicit "x" --name "a(){}; void b"
 expect_status "sdf gl_ name" 3 "invalid_name" sdf --implicit "x" --name gl_X
 expect_status "sdf keyword name" 3 "invalid_name" sdf --implicit "x" --name float

@@ -73,11 +73,11 @@ TEST(SceneJson, DecodedScenesEvaluate) {
            {"type": "translate", "offset": [3, 0, 0], "child": {"type": "torus", "major": 1, "minor": 0.25}}]})");
   EXPECT_DOUBLE_EQ(scene.evaluate(Vec3<double>{0, 0, 0}), -1.0);
   EXPECT_DOUBLE_EQ(scene.evaluate(Vec3<double>{4, 0, 0}), -0.25);
-  EXPECT_EQ(encode_scene_uniforms(scene), R"([{"name":"ball_radius","type":"float","default":1.0}])");
+  EXPECT_EQ(encode_scene_uniforms(scene.uniforms()), R"([{"name":"ball_radius","type":"float","default":1.0}])");
   const CompiledScene moved = compile_json(
       R"({"type": "translate", "offset": [3, 0, 0], "name": "m", "uniforms": ["offset"],
           "child": {"type": "sphere", "radius": 1}})");
-  EXPECT_EQ(encode_scene_uniforms(moved), R"([{"name":"m_offset","type":"vec3","default":[3.0,0.0,0.0]}])");
+  EXPECT_EQ(encode_scene_uniforms(moved.uniforms()), R"([{"name":"m_offset","type":"vec3","default":[3.0,0.0,0.0]}])");
 }
 
 TEST(SceneJson, TheDocumentedExamplesCompile) {
@@ -89,7 +89,7 @@ TEST(SceneJson, TheDocumentedExamplesCompile) {
       "uniforms": ["k"], "children": [{"type": "sphere", "radius": 1, "name": "ball", "uniforms": ["radius"]},
       {"type": "translate", "offset": [1.2, 0, 0], "child": {"type": "torus", "major": 0.8, "minor": 0.2}}]})"),
                                           options);
-  EXPECT_EQ(encode_scene_uniforms(api),
+  EXPECT_EQ(encode_scene_uniforms(api.uniforms()),
             R"([{"name":"blend_k","type":"float","default":0.2},{"name":"ball_radius","type":"float","default":1.0}])");
   EXPECT_EQ(api.function_name(), "demo_sdf");
   EXPECT_EQ(api.root_class(), NodeClass::lipschitz);
@@ -199,6 +199,30 @@ TEST(SceneJson, SizeLimits) {
   EXPECT_EQ(f.second.size(), std::string("scene").size() + 64 * std::string(".child").size());
   // Nesting beyond any legal scene is refused before parsing.
   EXPECT_EQ(failure(std::string(10000, '[') + std::string(10000, ']')).first, "json_too_deep");
+}
+
+// encode_scene is the server's cache key: it must read back as the same scene, and
+// two spellings of one scene (key order, 0.5 vs "1/2" in a box) must give one text.
+TEST(SceneJson, EncodeSceneIsCanonicalAndReadsBack) {
+  const std::string a = R"({"type": "union", "children": [
+    {"type": "round_box", "radius": 0.1, "size": [1, 2, 3], "name": "b", "uniforms": ["radius"]},
+    {"type": "parametric", "x": "s", "y": "t", "z": "s*t", "parameters": ["s", "t"],
+     "domain": [[0, "1/3"], [-1, 1]], "box": [-2, -2, -2, 2, 2, 0.5]},
+    {"type": "rotate", "angle": 0.7, "axis": [0, 0, 1], "child": {"type": "implicit", "equation": "x^2+y^2-z"}}]})";
+  const std::string b = R"({"children": [
+    {"size": [1, 2, 3], "uniforms": ["radius"], "name": "b", "radius": 0.1, "type": "round_box"},
+    {"domain": [["0", "2/6"], [-1, 1.0]], "type": "parametric", "parameters": ["s", "t"], "z": "s*t", "y": "t",
+     "x": "s", "box": [-2, -2, -2, 2, 2, "1/2"]},
+    {"child": {"equation": "x^2+y^2-z", "type": "implicit"}, "axis": [0, 0, 1], "type": "rotate", "angle": 0.7}],
+    "type": "union"})";
+  const std::string text = encode_scene(parse_scene_json(a));
+  EXPECT_EQ(text, encode_scene(parse_scene_json(b)));
+  EXPECT_EQ(encode_scene(parse_scene_json(text)), text);
+  EXPECT_NE(text.find(R"("domain":[["0","1/3"],["-1","1"]])"), std::string::npos) << text;
+  // A different value is a different text.
+  std::string c = a;
+  c.replace(c.find("0.7"), 3, "0.8");
+  EXPECT_NE(encode_scene(parse_scene_json(c)), text);
 }
 
 }  // namespace

@@ -114,12 +114,24 @@ def main():
         check(ref == f"#/components/schemas/{schema_name}", f"{path}: request body must be {schema_name}")
         properties = set(schema.get("properties", {}))
         example = schema.get("example")
-        check(isinstance(example, dict) and set(example) == properties,
-              f"{schema_name}: the example must set every property")
+        # Mutually exclusive fields (x-implicitizer-one-of, e.g. /v1/sdf's implicit or
+        # scene): the example sets one, x-implicitizer-alternative-example the others.
+        one_of = set(schema.get("x-implicitizer-one-of", []))
+        alternative = schema.get("x-implicitizer-alternative-example")
+        examples = [example] + ([alternative] if alternative is not None else [])
+        covered = set().union(*(set(e) for e in examples if isinstance(e, dict)))
+        check(all(isinstance(e, dict) for e in examples) and covered == properties,
+              f"{schema_name}: the examples must set every property")
         if not isinstance(example, dict):
             continue
-        result = decode(probe, endpoint, example)
-        check(result is None, f"{schema_name}: the codec refuses the example: {result}")
+        for e in examples:
+            check(not one_of or len(one_of & set(e)) == 1,
+                  f"{schema_name}: an example must set exactly one of {sorted(one_of)}")
+            result = decode(probe, endpoint, e)
+            check(result is None, f"{schema_name}: the codec refuses the example {e}: {result}")
+        if one_of and len(one_of & set(example)) == 1:
+            both = dict(example, **{f: alternative[f] for f in one_of if alternative and f in alternative})
+            check(decode(probe, endpoint, both) is not None, f"{schema_name}: {sorted(one_of)} together must be refused")
         # Fields the codec accepts: the unknown_field error lists them.
         result = decode(probe, endpoint, dict(example, openapi_test_unknown=1))
         match = result and result[0] == "unknown_field" and re.search(r"\(allowed: ([^)]*)\)", result[2])
@@ -129,10 +141,14 @@ def main():
             check(accepted == properties, f"{schema_name}: the YAML lists {sorted(properties)}, "
                                           f"the codec accepts {sorted(accepted)}")
         required = set()
-        for field in sorted(properties):
+        for field in sorted(properties - one_of):
             result = decode(probe, endpoint, {k: v for k, v in example.items() if k != field})
             if result is not None and result[0] == "missing_field" and result[1] == field:
                 required.add(field)
+        if one_of:
+            result = decode(probe, endpoint, {k: v for k, v in example.items() if k not in one_of})
+            check(result is not None and result[0] == "missing_field",
+                  f"{schema_name}: without any of {sorted(one_of)} the codec must answer missing_field: {result}")
         check(required == set(schema.get("required", [])),
               f"{schema_name}: required is {sorted(schema.get('required', []))}, the codec requires {sorted(required)}")
 

@@ -111,10 +111,32 @@ def test_sdf(s):
     check(status == 200 and body.get("mode") == "safe" and "float ball_sdf(vec3 p)" in body.get("glsl", "")
           and "safe distance bound" in body.get("glsl", "") and "pow" not in body.get("glsl", ""),
           "sdf safe sphere: %s %r" % (status, body))
+    scene = {"type": "smooth_union", "k": 0.3, "children": [
+        {"type": "sphere", "radius": 1, "name": "ball", "uniforms": ["radius"]},
+        {"type": "translate", "offset": [1.5, 0, 0], "child": {"type": "torus", "major": 1, "minor": 0.25}}]}
+    status, _, body = s.post_json("/v1/sdf", {"scene": scene, "name": "demo", "mode": "safe"})
+    glsl = body.get("glsl", "")
+    check(status == 200 and body.get("function") == "demo_sdf" and "float demo_sdf(vec3 p)" in glsl
+          and "uniform float ball_radius;" in glsl and "demo_torus" in glsl and "demo_box" not in glsl
+          and body.get("nodes") == 4 and body.get("uniforms") == [{"name": "ball_radius", "type": "float", "default": 1.0}],
+          "sdf scene: %s %r" % (status, body))
+    # The deepest scene the decoder accepts nests 2 JSON levels per node: more than
+    # the other endpoints' 32 levels.
+    deep = {"type": "sphere", "radius": 1}
+    for _ in range(40):
+        deep = {"type": "translate", "offset": [0.01, 0, 0], "child": deep}
+    status, _, body = s.post_json("/v1/sdf", {"scene": deep})
+    check(status == 200 and body.get("nodes") == 41, "sdf deep scene: %s %r" % (status, str(body)[:200]))
     for request, code, field in [({"implicit": "x^2", "name": "a(){}; void b"}, "invalid_name", "name"),
                                  ({"implicit": "x^60+y", "mode": "safe"}, "degree_too_high", "implicit"),
                                  ({"implicit": "x^2", "mode": "exact"}, "invalid_value", "mode"),
-                                 ({"implicit": "x^2", "scene": {}}, "not_built", "scene"),
+                                 ({"implicit": "x^2", "scene": {}}, "invalid_value", "scene"),
+                                 ({"scene": {"type": "sphere"}}, "missing_parameter", "scene.radius"),
+                                 ({"scene": {"type": "union", "children": [{"type": "sphere", "radius": 1},
+                                                                            {"type": "cube"}]}},
+                                  "unknown_node_type", "scene.children[1].type"),
+                                 ({"scene": {"type": "sphere", "radius": 1, "name": "a; } void main() {"}},
+                                  "invalid_name", "scene.name"),
                                  ({"implicit": "x^2+s"}, "unknown_variable", "implicit"),
                                  ({"implicit": "x^2", "box": [0, 0, 0, 1, 1]}, "invalid_box", "box")]:
         status, _, body = s.post_json("/v1/sdf", request)

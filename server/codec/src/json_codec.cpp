@@ -5,6 +5,7 @@
 #include <rapidjson/stringbuffer.h>
 #include <rapidjson/writer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "implicitizer/codec/json_depth.hpp"
+#include "implicitizer/codec/scene_json.hpp"
 #include "implicitizer/polynomial/printer.hpp"
 
 namespace implicitizer {
@@ -261,13 +263,24 @@ ResultantRequest decode_resultant_request(std::string_view body, const JsonLimit
 }
 
 SdfRequest decode_sdf_request(std::string_view body, const JsonLimits& limits) {
-  const rapidjson::Document document = parse_object(body, limits);
+  // A scene nests an object and a children array per level: allow the deepest
+  // scene the scene decoder accepts (kMaxSceneJsonDepth, a few hundred bytes of
+  // stack per level in RapidJSON's recursive destructor), whatever the caller's limit.
+  JsonLimits scene_limits = limits;
+  scene_limits.max_depth = std::max(limits.max_depth, kMaxSceneJsonDepth + 1);
+  const rapidjson::Document document = parse_object(body, scene_limits);
   ObjectReader reader(document);
   SdfRequest request;
-  if (reader.take("scene")) {
-    throw InputError("not_built", "scenes are not built yet: send an implicit equation").in_field("scene");
+  const rapidjson::Value* scene = reader.take("scene");
+  const rapidjson::Value* implicit = reader.take("implicit");
+  if (scene && implicit) {
+    throw InputError("invalid_value", "send either implicit or scene, not both").in_field("scene");
   }
-  request.implicit = read_string(reader.require("implicit"), "implicit");
+  if (scene) {
+    request.scene = decode_scene(*scene, "scene");
+  } else {
+    request.implicit = read_string(implicit ? *implicit : reader.require("implicit"), "implicit");
+  }
   if (const auto* v = reader.take("mode")) request.mode = read_string(*v, "mode");
   if (const auto* v = reader.take("name")) request.name = read_string(*v, "name");
   if (const auto* v = reader.take("box")) {
@@ -283,7 +296,7 @@ SdfRequest decode_sdf_request(std::string_view body, const JsonLimits& limits) {
     }
   }
   if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = read_timeout_seconds(*v);
-  reader.finish("implicit, mode, box, name, timeout_ms");
+  reader.finish("implicit, scene, mode, box, name, timeout_ms");
   return request;
 }
 
@@ -395,6 +408,26 @@ std::string encode_sdf_response(const SdfAnswer& answer) {
   configure(w);
   write_key(w, "degree");
   w.Int(answer.degree);
+  if (answer.nodes > 0) {
+    write_key(w, "nodes");
+    w.Uint64(answer.nodes);
+    write_key(w, "leaves");
+    w.StartArray();
+    for (const SdfLeafSummary& leaf : answer.leaves) {
+      w.StartObject();
+      write_key(w, "implicit");
+      write_string(w, leaf.implicit);
+      write_key(w, "degree");
+      w.Int(leaf.degree);
+      write_key(w, "trimmed");
+      w.Bool(leaf.trimmed);
+      w.EndObject();
+    }
+    w.EndArray();
+  }
+  write_key(w, "uniforms");
+  const std::string uniforms = encode_scene_uniforms(answer.uniforms);
+  w.RawValue(uniforms.data(), uniforms.size(), rapidjson::kArrayType);
   w.EndObject();
   return finish(buffer);
 }

@@ -5,6 +5,7 @@
 #include <rapidjson/stringbuffer.h>
 #include <rapidjson/writer.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <set>
@@ -221,26 +222,120 @@ SceneNode parse_scene_json(std::string_view text, const std::string& path) {
   return decode_scene(document, path);
 }
 
-std::string encode_scene_uniforms(const CompiledScene& scene) {
+namespace {
+
+using SceneWriter = rapidjson::Writer<rapidjson::StringBuffer>;
+
+void write_text(SceneWriter& w, const std::string& text) {
+  w.String(text.c_str(), static_cast<rapidjson::SizeType>(text.size()));
+}
+
+// A number, or [x, y, z] for a vec3.
+void write_parameter(SceneWriter& w, const Vec3<double>& value, bool is_vector) {
+  if (!is_vector) {
+    w.Double(value.x);
+    return;
+  }
+  w.StartArray();
+  w.Double(value.x);
+  w.Double(value.y);
+  w.Double(value.z);
+  w.EndArray();
+}
+
+// Exact numbers as exact strings ("1/3"): read_exact() reads them back unchanged.
+void write_exact(SceneWriter& w, const Rational& q) { write_text(w, to_string(q)); }
+
+void write_node(SceneWriter& w, const SceneNode& node) {
+  w.StartObject();
+  w.Key("type");
+  const std::string_view type = node_kind_info(node.kind).type_name;
+  w.String(type.data(), static_cast<rapidjson::SizeType>(type.size()));
+  auto parameters = node.parameters;
+  std::sort(parameters.begin(), parameters.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [key, value] : parameters) {
+    write_text(w, key);
+    write_parameter(w, value.value, value.is_vector);
+  }
+  if (!node.name.empty()) {
+    w.Key("name");
+    write_text(w, node.name);
+  }
+  if (!node.uniforms.empty()) {
+    w.Key("uniforms");
+    w.StartArray();
+    for (const std::string& u : node.uniforms) write_text(w, u);
+    w.EndArray();
+  }
+  if (node.kind == NodeKind::implicit) {
+    w.Key("equation");
+    write_text(w, node.leaf.equation);
+  }
+  if (node.kind == NodeKind::parametric) {
+    const char* const keys[3] = {"x", "y", "z"};
+    for (std::size_t i = 0; i < 3; ++i) {
+      w.Key(keys[i]);
+      write_text(w, node.leaf.coordinates[i]);
+    }
+    if (node.leaf.parameter_names) {
+      w.Key("parameters");
+      w.StartArray();
+      for (const std::string& name : *node.leaf.parameter_names) write_text(w, name);
+      w.EndArray();
+    }
+    if (!node.leaf.domain.empty()) {
+      w.Key("domain");
+      w.StartArray();
+      for (const auto& [lo, hi] : node.leaf.domain) {
+        w.StartArray();
+        write_exact(w, lo);
+        write_exact(w, hi);
+        w.EndArray();
+      }
+      w.EndArray();
+    }
+  }
+  if (node.leaf.box) {
+    w.Key("box");
+    w.StartArray();
+    for (const Rational& q : node.leaf.box->lo) write_exact(w, q);
+    for (const Rational& q : node.leaf.box->hi) write_exact(w, q);
+    w.EndArray();
+  }
+  const NodeArity arity = node_kind_info(node.kind).arity;
+  if (arity == NodeArity::unary && node.children.size() == 1) {
+    w.Key("child");
+    write_node(w, node.children[0]);
+  } else if (arity != NodeArity::leaf || !node.children.empty()) {
+    w.Key("children");
+    w.StartArray();
+    for (const SceneNode& child : node.children) write_node(w, child);
+    w.EndArray();
+  }
+  w.EndObject();
+}
+
+}  // namespace
+
+std::string encode_scene(const SceneNode& root) {
+  rapidjson::StringBuffer buffer;
+  SceneWriter w(buffer);
+  write_node(w, root);
+  return buffer.GetString();
+}
+
+std::string encode_scene_uniforms(const std::vector<SceneUniform>& uniforms) {
   rapidjson::StringBuffer buffer;
   rapidjson::Writer<rapidjson::StringBuffer> w(buffer);
   w.StartArray();
-  for (const SceneUniform& u : scene.uniforms()) {
+  for (const SceneUniform& u : uniforms) {
     w.StartObject();
     w.Key("name");
     w.String(u.name.c_str(), static_cast<rapidjson::SizeType>(u.name.size()));
     w.Key("type");
     w.String(u.type == ParameterType::vec3 ? "vec3" : "float");
     w.Key("default");
-    if (u.type == ParameterType::vec3) {
-      w.StartArray();
-      w.Double(u.default_value.x);
-      w.Double(u.default_value.y);
-      w.Double(u.default_value.z);
-      w.EndArray();
-    } else {
-      w.Double(u.default_value.x);
-    }
+    write_parameter(w, u.default_value, u.type == ParameterType::vec3);
     w.EndObject();
   }
   w.EndArray();

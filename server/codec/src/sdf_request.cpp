@@ -1,9 +1,11 @@
 #include "implicitizer/codec/sdf_request.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/polynomial/parser.hpp"
+#include "implicitizer/polynomial/printer.hpp"
 #include "implicitizer/polynomial/ring.hpp"
 #include "implicitizer/sdf/fast_sdf.hpp"
 #include "implicitizer/sdf/glsl_export.hpp"
@@ -55,24 +57,36 @@ SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& caller_bud
       box.hi[i] = parse_box_number(request.box[i + 3], ring, budget);
     }
   }
+  SdfAnswer answer;
+  answer.function = request.name + "_sdf";
+  answer.mode = mode == SdfMode::safe ? "safe" : "fast";
+  for (std::size_t i = 0; i < 3; ++i) {
+    answer.box[i] = nearest_double(box.lo[i]);
+    answer.box[i + 3] = nearest_double(box.hi[i]);
+  }
+  if (request.scene) {
+    make_scene_frame(box);  // validates a box no leaf may read
+    const CompiledScene scene = compile_scene(*request.scene, SceneOptions{mode, box, request.name, "scene"}, budget);
+    answer.glsl = scene.to_glsl();
+    answer.nodes = scene.node_count();
+    answer.uniforms = scene.uniforms();
+    for (const PolynomialLeaf& leaf : scene.leaves()) {
+      answer.leaves.push_back({to_string(leaf.equation()), leaf.equation().total_degree(), leaf.trimmed()});
+      answer.degree = std::max(answer.degree, leaf.equation().total_degree());
+    }
+    return answer;
+  }
   Polynomial f(ring);
   try {
     f = parse_polynomial(request.implicit, ring, budget);
   } catch (const InputError& e) {
     throw e.in_field("implicit");
   }
-  SdfAnswer answer;
-  answer.function = request.name + "_sdf";
   try {
     answer.glsl = mode == SdfMode::safe ? SafeSdf::build(f, box, budget).to_glsl(answer.function)
                                         : FastSdf::build(f, box, budget).to_glsl(answer.function);
   } catch (const InputError& e) {
     throw e.code() == "constant_polynomial" || e.code() == "degree_too_high" ? e.in_field("implicit") : e;
-  }
-  answer.mode = mode == SdfMode::safe ? "safe" : "fast";
-  for (std::size_t i = 0; i < 3; ++i) {
-    answer.box[i] = nearest_double(box.lo[i]);
-    answer.box[i + 3] = nearest_double(box.hi[i]);
   }
   answer.degree = f.total_degree();
   return answer;

@@ -1,12 +1,14 @@
 #include "handlers/sdf.hpp"
 
 #include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/codec/scene_json.hpp"
 
 namespace implicitizer::server {
 
 std::string canonical_key(const SdfRequest& request) {
   std::string key = "sdf|";
-  append_key_field(key, request.implicit);
+  append_key_field(key, request.scene ? encode_scene(*request.scene) : request.implicit);
+  append_key_field(key, request.scene ? "scene" : "implicit");
   append_key_field(key, request.mode);
   append_key_list(key, std::optional(request.box));
   append_key_field(key, request.name);

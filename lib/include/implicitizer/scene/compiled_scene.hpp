@@ -100,6 +100,9 @@ class CompiledScene {
   NodeClass root_class() const { return nodes_.empty() ? NodeClass::estimate : nodes_[root_].node_class; }
   /// Number of nodes.
   std::size_t node_count() const { return nodes_.size(); }
+  /// The polynomial leaves (implicit and parametric), in order of appearance: their
+  /// equations (a parametric leaf's is the one the library implicitized) and boxes.
+  const std::vector<PolynomialLeaf>& leaves() const { return leaves_; }
 
   /// One numeric parameter after compilation: a baked constant or a uniform.
   struct Slot {

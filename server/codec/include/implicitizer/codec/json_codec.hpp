@@ -48,10 +48,13 @@ GroebnerRequest decode_groebner_request(std::string_view body, const JsonLimits&
 /// `wrong_number_of_polynomials` (field "polynomials") unless there are exactly two.
 ResultantRequest decode_resultant_request(std::string_view body, const JsonLimits& limits = {});
 
-/// Reads a `POST /v1/sdf` body: `{"implicit": F, "mode": "fast"?, "box": [x0, y0, z0,
-/// x1, y1, z1]?, "name": N?, "timeout_ms": T?}`. Box numbers are read as doubles and passed on as their
-/// exact decimal value. `"scene"` is refused with `not_built` (field "scene") until
-/// scenes are built. Throws InputError as decode_implicitize_request().
+/// Reads a `POST /v1/sdf` body: `{"implicit": F | "scene": SCENE, "mode": "fast"?,
+/// "box": [x0, y0, z0, x1, y1, z1]?, "name": N?, "timeout_ms": T?}`. Box numbers are
+/// read as doubles and passed on as their exact decimal value. A scene is decoded by
+/// decode_scene() (scene_json.hpp; nesting up to kMaxSceneJsonDepth is allowed here
+/// whatever `limits` says). Throws InputError as decode_implicitize_request(), the
+/// errors of decode_scene() (fields "scene.children[1]…"), and `invalid_value`
+/// (field "scene") when both implicit and scene are given.
 SdfRequest decode_sdf_request(std::string_view body, const JsonLimits& limits = {});
 
 /// `{"implicit", "degree", "variables", "method", "verified", "elapsed_ms", "stats":
@@ -68,8 +71,10 @@ std::string encode_groebner_response(const GroebnerAnswer& answer);
 /// `{"resultant", "variables", "degree", "method", "elapsed_ms"}`.
 std::string encode_resultant_response(const ResultantAnswer& answer);
 
-/// `{"glsl", "function", "mode", "box": [x0, y0, z0, x1, y1, z1], "degree"}`: the
-/// answer of `POST /v1/sdf` (and `implicitizer sdf --json`).
+/// `{"glsl", "function", "mode", "box": [x0, y0, z0, x1, y1, z1], "degree",
+/// "uniforms": [{"name", "type", "default"}...]}`, and for a scene also `"nodes"` and
+/// `"leaves": [{"implicit", "degree", "trimmed"}...]`: the answer of `POST /v1/sdf`
+/// (and `implicitizer sdf --json`).
 std::string encode_sdf_response(const SdfAnswer& answer);
 
 /// `{"error": {"code", "message", "position"?, "field"?}}`: position when the error

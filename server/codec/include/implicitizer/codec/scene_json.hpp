@@ -24,13 +24,14 @@
 ///     SceneNode root = decode_scene(document["scene"], "scene");   // inside the codec
 ///     SceneNode root = parse_scene_json(text);                      // a whole JSON text
 ///     CompiledScene scene = compile_scene(root, options, budget);
-///     std::string uniforms = encode_scene_uniforms(scene);          // for the response
+///     std::string uniforms = encode_scene_uniforms(scene.uniforms());        // for the response
 
 #include <rapidjson/fwd.h>
 
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "implicitizer/scene/compiled_scene.hpp"
 #include "implicitizer/scene/scene_node.hpp"
@@ -52,9 +53,15 @@ SceneNode decode_scene(const rapidjson::Value& value, const std::string& path);
 /// decode_scene().
 SceneNode parse_scene_json(std::string_view text, const std::string& path = "scene");
 
-/// The uniforms of `scene` as a compact JSON array:
+/// `root` as compact JSON in a canonical form: keys in a fixed order (parameters
+/// sorted by name), numbers as the shortest decimal that reads back as the same
+/// double, exact numbers (boxes, domains) as exact strings ("1/3"). Decoding it gives
+/// `root` back; equal scenes give equal texts (the server's cache key).
+std::string encode_scene(const SceneNode& root);
+
+/// `uniforms` (CompiledScene::uniforms()) as a compact JSON array:
 /// `[{"name": "ball_radius", "type": "float", "default": 1.5}, {"name": ..., "type":
 /// "vec3", "default": [x, y, z]}]`, in declaration order.
-std::string encode_scene_uniforms(const CompiledScene& scene);
+std::string encode_scene_uniforms(const std::vector<SceneUniform>& uniforms);
 
 }  // namespace implicitizer

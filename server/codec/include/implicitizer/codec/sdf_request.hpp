@@ -2,8 +2,8 @@
 /// \file
 /// A distance-function request as the outside world states it (the contract's
 /// `POST /v1/sdf` body, or `implicitizer sdf`'s arguments), its answer, and the one
-/// function that computes it, shared by the CLI and (later) the HTTP handler.
-/// Only `implicit` surfaces are built (modes `fast` and `safe`); scenes are refused.
+/// function that computes it, shared by the CLI and the HTTP handler. The input is
+/// one implicit surface or a scene (docs/sdf.md, "Scenes"), in mode fast or safe.
 
 #include <array>
 #include <cstdint>
@@ -12,12 +12,16 @@
 #include <vector>
 
 #include "implicitizer/core/budget.hpp"
+#include "implicitizer/scene/compiled_scene.hpp"
+#include "implicitizer/scene/scene_node.hpp"
 
 namespace implicitizer {
 
 /// The fields of a request, still as text.
 struct SdfRequest {
-  std::string implicit;  ///< F(x, y, z): the surface F = 0
+  std::string implicit;  ///< F(x, y, z): the surface F = 0 (used when `scene` is absent)
+  /// A scene, already decoded (decode_scene, parse_scene_json); replaces `implicit`.
+  std::optional<SceneNode> scene;
   std::string mode = "fast";
   /// x0, y0, z0, x1, y1, z1 as exact numbers ("0.25", "1e-30", "-3/7"); empty:
   /// the default box [-2, 2]^3.
@@ -27,13 +31,23 @@ struct SdfRequest {
   std::optional<double> timeout_seconds;
 };
 
+/// One polynomial leaf of a scene, as the answer reports it.
+struct SdfLeafSummary {
+  std::string implicit;  ///< its equation F (a parametric leaf's, implicitized)
+  std::int32_t degree = 0;
+  bool trimmed = false;  ///< a parametric patch trimmed to its box (an unsigned sheet)
+};
+
 /// What a request computed.
 struct SdfAnswer {
   std::string glsl;               ///< the source of `float NAME_sdf(vec3 p)`
   std::string function;           ///< NAME_sdf
   std::string mode;               ///< "fast" or "safe"
   std::array<double, 6> box{};    ///< the box used, rounded to double
-  std::int32_t degree = 0;        ///< total degree of F
+  std::int32_t degree = 0;        ///< total degree of F; for a scene, the largest of its leaves (0: none)
+  std::size_t nodes = 0;          ///< nodes of the scene (0: an implicit surface)
+  std::vector<SceneUniform> uniforms;  ///< the scene's uniforms, in declaration order
+  std::vector<SdfLeafSummary> leaves;  ///< the scene's polynomial leaves
 };
 
 /// Answers `request` under `budget` (whose deadline the request's timeout, when
@@ -42,7 +56,9 @@ struct SdfAnswer {
 /// `constant_polynomial` ("implicit"), `degree_too_high` ("implicit": mode safe,
 /// terms beyond fp32's range, see SafeSdf::build), `invalid_value` ("mode": neither
 /// fast nor safe), `invalid_box` ("box": not six numbers, or hi <= lo),
-/// `invalid_name` ("name").
+/// `invalid_name` ("name"); for a scene the errors of compile_scene() (fields are the
+/// node paths "scene.children[1].radius"), with the request's box as the scene box and
+/// its name as the scene's name.
 SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& budget = Budget());
 
 }  // namespace implicitizer
