@@ -140,8 +140,8 @@ exit status: 0 success, 2 usage error (also: a scene file that cannot be read),
 invalid_name, degree_too_high: mode safe and terms beyond fp32's range; for scenes
 invalid_json, invalid_scene, unknown_node_type, missing_parameter, invalid_value,
 name_collision, unsafe_operator, repetition_overlap, unbounded_child,
-scene_too_large, invalid_domain, unbounded_patch), 4 a parametric leaf with no
-single equation, 5 time or size limit.
+scene_too_large, invalid_domain, unbounded_patch, no_single_equation: a parametric
+leaf whose image is not a surface), 5 time or size limit.
 )";
 
 }  // namespace implicitizer::cli

@@ -132,6 +132,11 @@ TEST(PolynomialLeaf, ErrorsNameTheLeafField) {
   EXPECT_EQ(code_and_field(parametric("s", "t", "s*t", {{Rational(0), Rational(1)}})).second, "scene.domain");
   // The image is a curve: no single equation.
   EXPECT_EQ(code_and_field(parametric("s", "s^2", "s^3")).first, "no_single_equation");
+  // A patch whose box leaves float's range (found by fuzz/request_fuzzer: rounding the
+  // box to float met infinity and GMP raised SIGFPE).
+  EXPECT_EQ(code_and_field(parametric("s", "t", "888888888888888888888888888888888888888888888888888888*s*t",
+                                      {{Rational(0), Rational(1)}, {Rational(0), Rational(1)}})),
+            std::make_pair(std::string("invalid_domain"), std::string("scene.domain")));
   // A denominator vanishing in the domain.
   EXPECT_EQ(
       code_and_field(parametric("1/s", "t", "s*t", {{Rational(-1), Rational(1)}, {Rational(0), Rational(1)}})).first,

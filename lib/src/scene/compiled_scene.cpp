@@ -91,7 +91,10 @@ CompiledScene compile_scene(const SceneNode& root, const SceneOptions& options, 
 
 void SceneCompiler::read_parameters(const SceneNode& node, const NodeKindInfo& info, const std::string& path,
                                     Node& out) {
-  for (const auto& [key, value] : node.parameters) {
+  for (const auto& parameter : node.parameters) {
+    // Named, not a structured binding: lambdas may not capture those before C++20's
+    // P1091 (clang 14, which builds the fuzzers, refuses it).
+    const std::string& key = parameter.first;
     const auto spec = std::find_if(info.parameters.begin(), info.parameters.end(),
                                    [&](const ParameterSpec& p) { return p.name == key; });
     if (spec == info.parameters.end()) {

@@ -14,12 +14,16 @@ namespace implicitizer {
 namespace {
 
 // The largest F ≤ q and the smallest F ≥ q (F = float or double): mpq_get_d truncates
-// toward zero, so step once or twice to the right side.
+// toward zero, so step once or twice to the right side. Beyond F's range the answer is
+// ±infinity (the caller refuses it); mpq_class(±inf) would raise SIGFPE in GMP, which
+// the request fuzzer found with a patch whose box exceeds float's range.
 template <typename F>
 F round_down(const Rational& q) {
   const mpq_class exact = to_mpq(q);
   F x = static_cast<F>(exact.get_d());
-  while (mpq_class(static_cast<double>(x)) > exact) x = std::nextafter(x, -std::numeric_limits<F>::infinity());
+  while (std::isfinite(x) && mpq_class(static_cast<double>(x)) > exact) {
+    x = std::nextafter(x, -std::numeric_limits<F>::infinity());
+  }
   return x;
 }
 
@@ -27,7 +31,9 @@ template <typename F>
 F round_up(const Rational& q) {
   const mpq_class exact = to_mpq(q);
   F x = static_cast<F>(exact.get_d());
-  while (mpq_class(static_cast<double>(x)) < exact) x = std::nextafter(x, std::numeric_limits<F>::infinity());
+  while (std::isfinite(x) && mpq_class(static_cast<double>(x)) < exact) {
+    x = std::nextafter(x, std::numeric_limits<F>::infinity());
+  }
   return x;
 }
 
