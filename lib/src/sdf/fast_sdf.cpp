@@ -34,16 +34,18 @@ std::string FastSdf::to_glsl(const std::string& function) const {
     out += std::string("  float ") + names[i] + " = (p." + axes[i] + " - " + format_glsl_float(centre_float_[i]) +
            ") * " + s + ";\n";
   }
+  out += "  float du = max(abs(u) - 1.0, 0.0);\n";
+  out += "  float dv = max(abs(v) - 1.0, 0.0);\n";
+  out += "  float dw = max(abs(w) - 1.0, 0.0);\n";
+  out += "  float box = sqrt(du * du + dv * dv + dw * dw) * " + format_glsl_float(half_extent_float_) + ";\n";
   out += "  if (max(abs(u), max(abs(v), abs(w))) > " + far + ") {\n";
-  out += "    float du = max(abs(u) - 1.0, 0.0);\n";
-  out += "    float dv = max(abs(v) - 1.0, 0.0);\n";
-  out += "    float dw = max(abs(w) - 1.0, 0.0);\n";
-  out += "    return sqrt(du * du + dv * dv + dw * dw) * " + format_glsl_float(half_extent_float_) + ";\n";
+  out += "    return box;\n";
   out += "  }\n";
   out += program_.to_glsl("  ");
-  out += "  return g / max(sqrt(gu * gu + gv * gv + gw * gw), " +
+  out += "  float d = g / max(sqrt(gu * gu + gv * gv + gw * gw), " +
          format_glsl_float(static_cast<float>(kGradientFloor)) + ") * " + format_glsl_float(half_extent_float_) +
          ";\n";
+  out += "  return d >= 0.0 ? max(d, box) : min(d, -box);\n";
   out += "}\n";
   return out;
 }

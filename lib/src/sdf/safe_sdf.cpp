@@ -173,7 +173,8 @@ std::string SafeSdf::to_glsl(const std::string& function) const {
   out += "    m_value = g;\n    m_sum = gu + gv + gw;\n";
   out += "  }\n";
   out += "  float lower = (abs(g_value) - " + f(k.gamma_value) + " * m_value) - " + f(k.tau) + ";\n";
-  out += "  if (!(lower >= " + f(k.minimum_value) + ")) {\n    return 0.0;\n  }\n";
+  out += "  if (!(lower >= " + f(k.minimum_value) + ")) {\n    return box * " + f(k.half_extent) + " * " +
+         f(k.out_shrink) + ";\n  }\n";
   out += "  float slope = sqrt(g_u * g_u + g_v * g_v + g_w * g_w) * " + f(k.norm_up) + " + " + f(k.gamma_gradient) +
          " * m_sum;\n";
   out += "  float r = " + f(k.radius_cap) + " * lower / max(slope * " + f(k.radius_cap) + ", lower);\n";
@@ -201,7 +202,7 @@ std::string SafeSdf::to_glsl(const std::string& function) const {
   out += "    r = safe;\n";
   out += "  }\n";
   out += "  float radius = safe - (abs_u + abs_v + abs_w) * " + f(k.u_error) + ";\n";
-  out += "  if (!(radius > 0.0)) {\n    return 0.0;\n  }\n";
+  out += "  if (!(radius > 0.0)) {\n    return box * " + f(k.half_extent) + " * " + f(k.out_shrink) + ";\n  }\n";
   out += "  float d = max(box, radius) * " + f(k.half_extent) + " * " + f(k.out_shrink) + ";\n";
   out += "  return g_value < 0.0 ? -d : d;\n";
   out += "}\n";

@@ -167,7 +167,9 @@ T SafeSdf::evaluate_with_chord_steps(T x, T y, T z, int chord_steps) const {
   const T m_sum = m.gradient[0] + m.gradient[1] + m.gradient[2];
   // A <= |G(u)|, B >= |∇G(u)|.
   const T lower = (std::abs(g.value) - k.gamma_value * m.value) - k.tau;
-  if (!(lower >= k.minimum_value)) return zero;
+  // Within fp32's resolution of F = 0: 0 inside the box, the distance to the box
+  // outside it (the zero set outside the box is not drawn).
+  if (!(lower >= k.minimum_value)) return box * k.half_extent * k.out_shrink;
   const T slope =
       std::sqrt(g.gradient[0] * g.gradient[0] + g.gradient[1] * g.gradient[1] + g.gradient[2] * g.gradient[2]) *
           k.norm_up +
@@ -198,7 +200,7 @@ T SafeSdf::evaluate_with_chord_steps(T x, T y, T z, int chord_steps) const {
     r = safe;
   }
   const T radius = safe - (abs_u + abs_v + abs_w) * k.u_error;
-  if (!(radius > zero)) return zero;
+  if (!(radius > zero)) return box * k.half_extent * k.out_shrink;
   const T d = std::max(box, radius) * k.half_extent * k.out_shrink;
   return g.value < zero ? -d : d;
 }
