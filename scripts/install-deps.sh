@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Installs what implicitizer needs on Debian (bookworm): the compiler and CMake, the
 # number libraries (GMP, MPFR, FLINT, CGAL), Boost (Beast is header-only inside
-# libboost-dev), RapidJSON, GoogleTest, the oracles the tests compare against
-# (Singular, Macaulay2), glslang for checking generated GLSL, EGL/OpenGL ES and Mesa's
-# drivers for running it on llvmpipe (tests/sdf/glsl_execution_test.cpp), Python 3 and
-# clang (libFuzzer, clang-format).
+# libboost-dev), RapidJSON, libpng (the preview renderer's PNG), GoogleTest, the
+# oracles the tests compare against (Singular, Macaulay2), glslang for checking
+# generated GLSL, EGL/OpenGL ES and Mesa's drivers for running it on llvmpipe
+# (tests/sdf/glsl_execution_test.cpp), Python 3 and clang (libFuzzer, clang-format).
 #
 # Idempotent: asks dpkg which packages are missing and only then runs apt-get, so a
 # machine that has everything is left alone (no apt-get update, no network).
@@ -14,6 +14,7 @@ packages=(
   build-essential cmake make pkg-config g++
   libgmp-dev libmpfr-dev libflint-dev libcgal-dev
   libboost-dev rapidjson-dev
+  libpng-dev
   googletest libgtest-dev libgmock-dev
   singular macaulay2
   glslang-tools

@@ -3,7 +3,9 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <limits>
+#include <sstream>
 
 namespace implicitizer::cli {
 namespace {
@@ -121,6 +123,15 @@ int parse_int(const std::string& text, const char* flag) {
     throw UsageError(std::string("--") + flag + " needs integers, not '" + text + "'");
   }
   return static_cast<int>(n);
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError("cannot read scene file '" + path + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw UsageError("cannot read scene file '" + path + "'");
+  return text.str();
 }
 
 }  // namespace implicitizer::cli

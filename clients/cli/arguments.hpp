@@ -55,6 +55,10 @@ Arguments parse_arguments(std::span<const std::string> args, std::span<const Opt
 /// Throws UsageError naming `flag` for an empty item ("s,,t").
 std::vector<std::string> split_list(const std::string& text, const char* flag);
 
+/// The contents of the file at `path` (a `--scene FILE.json`). Throws UsageError when
+/// it cannot be read: the command named the file, so that is a usage error (exit 2).
+std::string read_text_file(const std::string& path);
+
 /// A timeout in seconds: a finite number > 0 (decimals and `1e-3` allowed).
 /// Throws UsageError naming `flag` otherwise.
 double parse_seconds(const std::string& text, const char* flag);

@@ -11,6 +11,7 @@ commands:
   groebner      the reduced Groebner basis of an ideal (or an elimination ideal)
   resultant     the resultant of two polynomials with respect to one variable
   sdf           a GLSL distance estimate of the surface F(x,y,z) = 0
+  render        a PNG preview of a surface or scene (sphere tracing and friends)
   help [CMD]    this text, or the help of one command
   --version     the version
 
@@ -20,6 +21,9 @@ commands:
                [--eliminate s,t] [--timeout SECONDS] [--json] F [F ...]
   implicitizer resultant --var t [--timeout SECONDS] [--max-terms N] [--json] F G
   implicitizer sdf (--implicit E | --scene FILE.json) [--mode fast|safe] [--box x0,y0,z0,x1,y1,z1] [--name NAME] [--json]
+  implicitizer render (--implicit E | --x E --y E --z E [--params s,t] | --scene FILE.json)
+               [--method sphere|enhanced|newton|forward_newton|exact] [--mode fast|safe] [--size WxH]
+               [--aa N] [--eye x,y,z] [--target x,y,z] [--box ...] [--timeout S] -o FILE.png [--json]
   implicitize and groebner also take --strategy auto|normal|sugar,
   --criteria gm|seed|product|none, --max-terms N
 
@@ -142,6 +146,50 @@ invalid_json, invalid_scene, unknown_node_type, missing_parameter, invalid_value
 name_collision, unsafe_operator, repetition_overlap, unbounded_child,
 scene_too_large, invalid_domain, unbounded_patch, no_single_equation: a parametric
 leaf whose image is not a surface), 5 time or size limit.
+)";
+
+const char* const kRenderHelp = R"(usage: implicitizer render (--implicit E | --x E --y E --z E | --scene FILE.json) -o FILE.png [OPTIONS]
+
+Draws a preview of the surface E = 0, of a parametric surface (implicitized first)
+or of a scene into a PNG: rays marched through the same distance function the GLSL
+of `implicitizer sdf` computes (evaluated in fp32 on the CPU), shaded with
+Blinn-Phong, soft shadows and ambient occlusion (docs/render.md).
+
+options:
+  --implicit E          the polynomial F(x, y, z)
+  --x E --y E --z E     a parametric surface instead (--params s,t: their order)
+  --scene FILE.json     a scene instead (docs/sdf.md, "Scenes")
+  -o, --output FILE     the PNG to write (required)
+  --method M            sphere (default): sphere tracing; enhanced: over-relaxed
+                        sphere tracing, as safe as sphere; newton, forward_newton:
+                        Newton marching, not safe; exact: the first root of the
+                        polynomial on each ray (implicit and parametric surfaces only)
+  --mode fast|safe      the distance function: fast F/|grad F| (default) or the safe
+                        bound (sphere tracing never crosses the surface)
+  --size WxH            image size in pixels (default 256x256)
+  --aa N                N x N samples per pixel, 1 to 8 (default 2)
+  --eye x,y,z           the camera (default: box centre + (3,3,5) x box half side / 2)
+  --target x,y,z        the look-at point (default: the box centre)
+  --box x0,y0,z0,x1,y1,z1
+                        the scene box, exact numbers (default -2,-2,-2,2,2,2)
+  --precision float|double
+                        the arithmetic of the distance function (default float,
+                        what a GPU computes)
+  --threads N           render threads (default: one per core)
+  --timeout SECONDS     stop (exit 5) when the render takes longer
+  --json                print {"width", "height", "method", "mode", "rays",
+                        "mean_evaluations", "max_evaluations", "out_of_steps", "hits",
+                        "elapsed_ms", ...} (what POST /v1/render answers with
+                        "format": "json", without the PNG)
+  -h, --help            this text
+
+limits: width and height 1 to 4096, width x height x aa^2 at most 4194304 rays.
+
+exit status: 0 success, 2 usage error (also: a scene file that cannot be read, an
+output file that cannot be written), 3 invalid input (the errors of sdf, and
+invalid_size, render_too_large, invalid_camera, method_not_applicable: exact on a
+scene that is not one polynomial leaf), 4 no single equation (a parametric surface
+whose image is not a surface), 5 time limit.
 )";
 
 }  // namespace implicitizer::cli

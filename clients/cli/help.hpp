@@ -15,5 +15,7 @@ extern const char* const kGroebnerHelp;
 extern const char* const kResultantHelp;
 /// `implicitizer sdf --help`.
 extern const char* const kSdfHelp;
+/// `implicitizer render --help`.
+extern const char* const kRenderHelp;
 
 }  // namespace implicitizer::cli

@@ -12,6 +12,7 @@
 #include "groebner_command.hpp"
 #include "help.hpp"
 #include "implicitize_command.hpp"
+#include "render_command.hpp"
 #include "resultant_command.hpp"
 #include "sdf_command.hpp"
 
@@ -30,6 +31,7 @@ int run(const std::vector<std::string>& words) {
   if (command == "groebner") return run_groebner_command(rest);
   if (command == "resultant") return run_resultant_command(rest);
   if (command == "sdf") return run_sdf_command(rest);
+  if (command == "render") return run_render_command(rest);
   if (command == "--version" || command == "version") {
     std::cout << "implicitizer " << IMPLICITIZER_VERSION << '\n';
     return kExitOk;
@@ -45,13 +47,12 @@ int run(const std::vector<std::string>& words) {
       std::cout << kResultantHelp;
     } else if (rest.front() == "sdf") {
       std::cout << kSdfHelp;
+    } else if (rest.front() == "render") {
+      std::cout << kRenderHelp;
     } else {
       return report_usage_error("no help for unknown command '" + rest.front() + "'", nullptr);
     }
     return kExitOk;
-  }
-  if (command == "render") {
-    return report_usage_error("the command '" + command + "' is not built yet", nullptr);
   }
   return report_usage_error("unknown command '" + command + "'", nullptr);
 }

@@ -17,16 +17,6 @@ namespace {
 
 constexpr const char* kCommand = "sdf";
 
-// A file that cannot be read is a usage error (exit 2): the command named it.
-std::string read_scene_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError("cannot read scene file '" + path + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw UsageError("cannot read scene file '" + path + "'");
-  return text.str();
-}
-
 constexpr OptionSpec kOptions[] = {{"implicit", true}, {"scene", true}, {"mode", true}, {"box", true},
                                    {"name", true},     {"json", false}, {"help", false}};
 
@@ -53,7 +43,7 @@ int run_sdf_command(std::span<const std::string> args) {
     if (implicit && scene) throw UsageError("give --implicit E or --scene FILE.json, not both");
     if (!implicit && !scene) throw UsageError("missing --implicit E (the surface E = 0) or --scene FILE.json");
     if (implicit) request.implicit = *implicit;
-    if (scene) scene_text = read_scene_file(*scene);
+    if (scene) scene_text = read_text_file(*scene);
     if (const auto box = arguments.value("box")) request.box = split_list(*box, "box");
     if (const auto name = arguments.value("name")) request.name = *name;
   } catch (const UsageError& e) {

@@ -8,6 +8,7 @@
 #include "handlers/healthz.hpp"
 #include "handlers/implicitize.hpp"
 #include "handlers/metrics.hpp"
+#include "handlers/render.hpp"
 #include "handlers/resultant.hpp"
 #include "handlers/sdf.hpp"
 #include "handlers/static_files.hpp"
@@ -67,6 +68,8 @@ Router::Router(HandlerContext context) : context_(std::move(context)), cors_(con
                      }});
   routes_.push_back(
       {"/v1/sdf", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r) { return handle_sdf(r, c); }});
+  routes_.push_back(
+      {"/v1/render", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r) { return handle_render(r, c); }});
 }
 
 std::vector<RouteInfo> Router::routes() const {

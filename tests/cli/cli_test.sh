@@ -305,5 +305,74 @@ expect_status "sdf constant" 3 "constant_polynomial" sdf --implicit "3"
 expect_json "sdf json error" 3 'j["error"]["code"] == "invalid_name" and j["error"]["field"] == "name"' \
   sdf --implicit "x" --name "1a" --json
 
+# render (docs/render.md): a PNG, decoded back here with python3's zlib (8-bit RGB,
+# the five row filters), and the statistics of --json.
+png_pixels() {  # png_pixels FILE: prints "W H BACKGROUND CENTRE" (background: pixels of grey 242)
+  python3 - "$1" <<'PY'
+import struct, sys, zlib
+data = open(sys.argv[1], "rb").read()
+assert data[:8] == b"\x89PNG\r\n\x1a\n"
+pos, idat = 8, b""
+while pos < len(data):
+    n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+    body = data[pos + 8:pos + 8 + n]
+    pos += 12 + n
+    if kind == b"IHDR":
+        w, h, depth, colour = struct.unpack(">IIBB", body[:10])
+        assert depth == 8 and colour == 2
+    elif kind == b"IDAT":
+        idat += body
+raw, stride, prev, rows = zlib.decompress(idat), 3 * w, bytearray(3 * w), []
+for y in range(h):
+    f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+    for i in range(stride):
+        a, b, c = (line[i - 3] if i >= 3 else 0), prev[i], (prev[i - 3] if i >= 3 else 0)
+        p = a + b - c
+        pred = [0, a, b, (a + b) // 2,
+                a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else b if abs(p - b) <= abs(p - c) else c][f]
+        line[i] = (line[i] + pred) & 255
+    rows.append(line)
+    prev = line
+grey = sum(1 for row in rows for x in range(w) if row[3 * x:3 * x + 3] == b"\xf2\xf2\xf2")
+centre = rows[h // 2][3 * (w // 2):3 * (w // 2) + 3]
+print(w, h, grey, "grey" if centre == b"\xf2\xf2\xf2" else "surface")
+PY
+}
+run render --implicit "x^2+y^2+z^2-1" --size 48x32 --aa 1 -o "$WORK/sphere.png"
+if [[ $(status) == 0 ]] && read -r w h grey centre < <(png_pixels "$WORK/sphere.png") && [[ "$w $h $centre" == "48 32 surface" ]] \
+   && ((grey > 0 && grey < 48 * 32)); then pass; else
+  fail "render writes a 48x32 PNG with the sphere in the middle"
+fi
+expect_json "render json" 0 'j["width"] == 40 and j["height"] == 20 and j["method"] == "enhanced" and j["mode"] == "safe" and j["rays"] == 40 * 20 * 4 and 0 < j["hits"] < j["rays"] and j["mean_evaluations"] > 1 and j["max_evaluations"] >= j["mean_evaluations"] and j["out_of_steps"] >= 0 and j["elapsed_ms"] > 0 and "png_base64" not in j' \
+  render --implicit "x^2+y^2+z^2-1" --size 40x20 --method enhanced --mode safe -o "$WORK/s.png" --json
+run render --implicit "x^2+y^2+z^2-1" --size 40x20 --aa 1 --json -o "$WORK/j.png"
+if [[ $(status) == 0 ]] && read -r w h grey centre < <(png_pixels "$WORK/j.png") && python3 -c "
+import json, sys
+j = json.load(open(sys.argv[1]))
+sys.exit(0 if j['rays'] - j['hits'] == int(sys.argv[2]) else 1)" "$WORK/out" "$grey"; then pass; else
+  fail "render: the background pixels are the rays that missed (AA 1)"
+fi
+expect_json "render parametric exact" 0 'j["method"] == "exact" and j["hits"] > 0' \
+  render --x "s*t" --y s --z "t^2" --params s,t --method exact --size 24x24 -o "$WORK/w.png" --json
+cat >"$WORK/render_scene.json" <<'JSON'
+{"type": "union", "children": [{"type": "sphere", "radius": 1}, {"type": "implicit", "equation": "z+1"}]}
+JSON
+expect_json "render scene" 0 'j["hits"] > 0' render --scene "$WORK/render_scene.json" --size 24x24 -o "$WORK/u.png" --json
+expect_status "render exact on a scene" 3 "method_not_applicable" \
+  render --scene "$WORK/render_scene.json" --method exact -o "$WORK/u.png"
+expect_status "render no output" 2 "missing -o" render --implicit "x"
+expect_status "render two surfaces" 2 "exactly one of" render --implicit "x" --x s --y t --z s -o "$WORK/u.png"
+expect_status "render parametric curve" 4 "no_single_equation" render --x t --y "t^2" --z "t^3" -o "$WORK/u.png"
+expect_status "render partial parametric" 2 "needs --x, --y and --z" render --x s --y t -o "$WORK/u.png"
+expect_status "render bad size" 2 "WIDTHxHEIGHT" render --implicit "x" --size 48 -o "$WORK/u.png"
+expect_status "render bad aa" 2 "--aa must be 1 to 8" render --implicit "x" --aa 9 -o "$WORK/u.png"
+expect_status "render bad eye" 2 "three numbers" render --implicit "x" --eye 1,2 -o "$WORK/u.png"
+expect_status "render eye at target" 3 "invalid_camera" render --implicit "x" --eye 0,0,0 -o "$WORK/u.png"
+expect_status "render unknown method" 3 "invalid_value" render --implicit "x" --method bisection -o "$WORK/u.png"
+expect_status "render too large" 3 "render_too_large" render --implicit "x" --size 4096x4096 -o "$WORK/u.png"
+expect_status "render parse error" 3 "unexpected_end" render --implicit "x^2+" -o "$WORK/u.png"
+expect_status "render unwritable output" 2 "cannot write" render --implicit "x" --size 8x8 -o /nonexistent-dir/u.png
+expect_status "render timeout" 5 "time" render --implicit "x^2+y^2+z^2-1" --size 2048x2048 --aa 1 --timeout 0.001 -o "$WORK/u.png"
+
 echo "$passed passed, $failed failed"
 [[ $failed == 0 ]]

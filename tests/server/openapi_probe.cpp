@@ -2,7 +2,7 @@
 /// What docs/openapi.yaml is checked against (tests/server/openapi_test.py):
 ///
 ///   openapi_probe routes                       one line per API route: PATH<TAB>ALLOW
-///   openapi_probe decode implicitize|groebner|resultant|sdf
+///   openapi_probe decode implicitize|groebner|resultant|sdf|render
 ///                                              decodes stdin as that endpoint's body;
 ///                                              prints `ok`, or `error CODE<TAB>FIELD<TAB>MESSAGE`
 ///
@@ -40,6 +40,8 @@ int decode(std::string_view endpoint) {
       (void)decode_resultant_request(body);
     } else if (endpoint == "sdf") {
       (void)decode_sdf_request(body);
+    } else if (endpoint == "render") {
+      (void)decode_render_request(body);
     } else {
       std::cerr << "openapi_probe: unknown endpoint " << endpoint << '\n';
       return 2;
@@ -58,6 +60,6 @@ int main(int argc, char** argv) {
   const std::string_view command = argc > 1 ? argv[1] : "";
   if (command == "routes" && argc == 2) return print_routes();
   if (command == "decode" && argc == 3) return decode(argv[2]);
-  std::cerr << "usage: openapi_probe routes | openapi_probe decode implicitize|groebner|resultant|sdf < BODY\n";
+  std::cerr << "usage: openapi_probe routes | openapi_probe decode implicitize|groebner|resultant|sdf|render < BODY\n";
   return 2;
 }

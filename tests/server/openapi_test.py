@@ -26,7 +26,8 @@ HTTP_METHODS = {"get", "put", "post", "delete", "options", "head", "patch", "tra
 REQUESTS = {"/v1/implicitize": ("implicitize", "ImplicitizeRequest"),
             "/v1/groebner": ("groebner", "GroebnerRequest"),
             "/v1/resultant": ("resultant", "ResultantRequest"),
-            "/v1/sdf": ("sdf", "SdfRequest")}
+            "/v1/sdf": ("sdf", "SdfRequest"),
+            "/v1/render": ("render", "RenderRequest")}
 
 failures = []
 
@@ -117,8 +118,10 @@ def main():
         # Mutually exclusive fields (x-implicitizer-one-of, e.g. /v1/sdf's implicit or
         # scene): the example sets one, x-implicitizer-alternative-example the others.
         one_of = set(schema.get("x-implicitizer-one-of", []))
+        # (x-implicitizer-alternative-examples: more of them, e.g. /v1/render's parametric surface.)
         alternative = schema.get("x-implicitizer-alternative-example")
-        examples = [example] + ([alternative] if alternative is not None else [])
+        examples = [example] + ([alternative] if alternative is not None else []) \
+            + list(schema.get("x-implicitizer-alternative-examples", []))
         covered = set().union(*(set(e) for e in examples if isinstance(e, dict)))
         check(all(isinstance(e, dict) for e in examples) and covered == properties,
               f"{schema_name}: the examples must set every property")

@@ -226,9 +226,41 @@ TEST_F(RouterTest, MetricsExposeRequestsAndCache) {
 TEST_F(RouterTest, KnowsItsRoutes) {
   std::vector<std::string> paths;
   for (const RouteInfo& route : router_.routes()) paths.push_back(route.path);
-  EXPECT_EQ(paths,
-            (std::vector<std::string>{"/healthz", "/metrics", "/v1/implicitize", "/v1/groebner", "/v1/resultant",
-                                      "/v1/sdf"}));
+  EXPECT_EQ(paths, (std::vector<std::string>{"/healthz", "/metrics", "/v1/implicitize", "/v1/groebner", "/v1/resultant",
+                                             "/v1/sdf", "/v1/render"}));
+}
+
+TEST_F(RouterTest, RenderRunsOnThePoolAndAnswersPng) {
+  bool computed = false;
+  const Response png =
+      answer(post("/v1/render", R"({"implicit": "x^2+y^2+z^2-1", "width": 16, "height": 8, "aa": 1})"), &computed);
+  EXPECT_TRUE(computed) << "rendering must not run on the network thread";
+  EXPECT_EQ(png.result(), http::status::ok);
+  EXPECT_EQ(png[http::field::content_type], "image/png");
+  EXPECT_EQ(png.body().substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_EQ(png["X-Render-Rays"], "128");
+  EXPECT_EQ(png["X-Render-Method"], "sphere");
+
+  const Response json = answer(
+      post("/v1/render", R"({"implicit": "x^2+y^2+z^2-1", "width": 16, "height": 8, "format": "json"})"), &computed);
+  EXPECT_EQ(json.result(), http::status::ok);
+  EXPECT_EQ(json[http::field::content_type], "application/json");
+  EXPECT_NE(json.body().find(R"("rays":512,)"), std::string::npos) << json.body();
+  EXPECT_NE(json.body().find(R"("png_base64":"iVBORw0KGgo)"), std::string::npos);
+
+  // Sizes are checked before anything is queued.
+  const Response large =
+      answer(post("/v1/render", R"({"implicit": "x", "width": 2048, "height": 2048, "aa": 2})"), &computed);
+  EXPECT_FALSE(computed);
+  EXPECT_EQ(large.result(), http::status::payload_too_large);
+  EXPECT_NE(large.body().find("render_too_large"), std::string::npos);
+  const Response bad = answer(post("/v1/render", R"({"implicit": "x", "width": 0})"), &computed);
+  EXPECT_FALSE(computed);
+  EXPECT_EQ(bad.result(), http::status::bad_request);
+  EXPECT_NE(bad.body().find("invalid_size"), std::string::npos);
+  const Response exact = answer(post("/v1/render", R"({"scene": {"type": "sphere", "radius": 1}, "method": "exact"})"));
+  EXPECT_EQ(exact.result(), http::status::bad_request);
+  EXPECT_NE(exact.body().find("method_not_applicable"), std::string::npos);
 }
 
 }  // namespace

@@ -144,6 +144,76 @@ def test_sdf(s):
               "sdf %r: %s %r" % (request, status, body))
 
 
+def decode_png(data):
+    """(width, height, rows of (r, g, b) tuples) of an 8-bit RGB PNG, by zlib and the
+    five PNG row filters: the test reads back what the server wrote, with no image library."""
+    import struct
+    import zlib
+    check(data[:8] == b"\x89PNG\r\n\x1a\n", "PNG signature")
+    pos, idat, width, height = 8, b"", 0, 0
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        chunk = data[pos + 8:pos + 8 + length]
+        pos += 12 + length
+        if kind == b"IHDR":
+            width, height, depth, colour = struct.unpack(">IIBB", chunk[:10])
+            check(depth == 8 and colour == 2, "PNG is 8-bit RGB")
+        elif kind == b"IDAT":
+            idat += chunk
+    raw, stride, rows, previous = zlib.decompress(idat), 3 * width, [], bytearray(3 * width)
+    for y in range(height):
+        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - 3] if i >= 3 else 0
+            b, c = previous[i], previous[i - 3] if i >= 3 else 0
+            if kind == 1:
+                line[i] = (line[i] + a) & 255
+            elif kind == 2:
+                line[i] = (line[i] + b) & 255
+            elif kind == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append([tuple(line[3 * x:3 * x + 3]) for x in range(width)])
+        previous = line
+    return width, height, rows
+
+
+def test_render(s):
+    import base64
+    status, headers, data = s.request("POST", "/v1/render", {"implicit": "x^2+y^2+z^2-1", "width": 40, "height": 30,
+                                                             "aa": 1}, {"Content-Type": "application/json"})
+    check(status == 200 and headers.get("content-type") == "image/png", "render: %s %r" % (status, headers))
+    width, height, rows = decode_png(data)
+    check((width, height) == (40, 30), "render size %dx%d" % (width, height))
+    check(rows[0][0] == (242, 242, 242), "render background is the seed's grey 0.95: %r" % (rows[0][0],))
+    check(rows[15][20] != (242, 242, 242), "render: the sphere is in the middle")
+    rays, hits = int(headers.get("x-render-rays", -1)), int(headers.get("x-render-hits", -1))
+    background = sum(1 for row in rows for p in row if p == (242, 242, 242))
+    check(rays == 1200 and background == rays - hits and headers.get("x-render-method") == "sphere"
+          and float(headers.get("x-render-mean-evaluations", 0)) > 1, "render headers: %r" % headers)
+    # The JSON variant: the same image in base64, with the statistics.
+    status, _, body = s.post_json("/v1/render", {"x": "s*t", "y": "s", "z": "t^2", "width": 24, "height": 24,
+                                                 "method": "exact", "format": "json"})
+    check(status == 200 and body.get("method") == "exact" and body.get("rays") == 24 * 24 * 4,
+          "render json: %s %r" % (status, str(body)[:300]))
+    if status == 200:
+        check(decode_png(base64.b64decode(body["png_base64"]))[:2] == (24, 24), "render json: the PNG decodes")
+    for request, want_status, want_code in [
+            ({"implicit": "x^2+y^2+z^2-1", "width": 4096, "height": 4096}, 413, "render_too_large"),
+            ({"scene": {"type": "sphere", "radius": 1}, "method": "exact"}, 400, "method_not_applicable"),
+            ({"implicit": "x^2+y^2+z^2-1", "method": "bisection"}, 400, "invalid_value"),
+            ({"implicit": "x^2+y^2+z^2-1", "eye": [0, 0, 0]}, 400, "invalid_camera"),
+            ({"implicit": "x^2+", "width": 8}, 400, "unexpected_end"),
+            ({"x": "s", "y": "t"}, 400, "missing_field"),
+            ({"x": "t", "y": "t^2", "z": "t^3"}, 422, "no_single_equation")]:
+        status, _, body = s.post_json("/v1/render", request)
+        check(status == want_status and error_code(body) == want_code,
+              "render %r: %s %r" % (request, status, body))
+
+
 def test_cache(s):
     hits = s.metric("implicitizer_cache_hits_total")
     # Same request, other key order, spacing and timeout: the same canonical request.
@@ -490,6 +560,7 @@ def main():
         lambda: test_implicitize_sphere(s),
         lambda: test_implicitize_routes_and_curves(s),
         lambda: test_sdf(s),
+        lambda: test_render(s),
         lambda: test_cache(s),
         lambda: test_groebner(s),
         lambda: test_resultant(s),

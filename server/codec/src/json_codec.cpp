@@ -262,6 +262,25 @@ ResultantRequest decode_resultant_request(std::string_view body, const JsonLimit
   return request;
 }
 
+namespace {
+
+// A scene box: six JSON numbers, passed on as the exact decimal value of each double
+// (17 significant digits round-trip; the SDF frame then reads it as an exact rational).
+std::vector<std::string> read_box_texts(const rapidjson::Value& v) {
+  if (!v.IsArray()) throw wrong_type("box", "an array of six numbers");
+  std::vector<std::string> box;
+  for (rapidjson::SizeType i = 0; i < v.Size(); ++i) {
+    const rapidjson::Value& x = v[i];
+    if (!x.IsNumber()) throw wrong_type("box[" + std::to_string(i) + "]", "a number");
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", x.GetDouble());
+    box.emplace_back(text);
+  }
+  return box;
+}
+
+}  // namespace
+
 SdfRequest decode_sdf_request(std::string_view body, const JsonLimits& limits) {
   // A scene nests an object and a children array per level: allow the deepest
   // scene the scene decoder accepts (kMaxSceneJsonDepth, a few hundred bytes of
@@ -283,21 +302,149 @@ SdfRequest decode_sdf_request(std::string_view body, const JsonLimits& limits) {
   }
   if (const auto* v = reader.take("mode")) request.mode = read_string(*v, "mode");
   if (const auto* v = reader.take("name")) request.name = read_string(*v, "name");
-  if (const auto* v = reader.take("box")) {
-    if (!v->IsArray()) throw wrong_type("box", "an array of six numbers");
-    for (rapidjson::SizeType i = 0; i < v->Size(); ++i) {
-      const rapidjson::Value& x = (*v)[i];
-      if (!x.IsNumber()) throw wrong_type("box[" + std::to_string(i) + "]", "a number");
-      // The double's exact value in decimal (17 significant digits round-trip; the
-      // SDF frame then reads it as an exact rational).
-      char text[40];
-      std::snprintf(text, sizeof text, "%.17g", x.GetDouble());
-      request.box.emplace_back(text);
-    }
-  }
+  if (const auto* v = reader.take("box")) request.box = read_box_texts(*v);
   if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = read_timeout_seconds(*v);
   reader.finish("implicit, scene, mode, box, name, timeout_ms");
   return request;
+}
+
+RenderRequest decode_render_request(std::string_view body, const JsonLimits& limits) {
+  JsonLimits scene_limits = limits;  // as decode_sdf_request: room for the deepest scene
+  scene_limits.max_depth = std::max(limits.max_depth, kMaxSceneJsonDepth + 1);
+  const rapidjson::Document document = parse_object(body, scene_limits);
+  ObjectReader reader(document);
+  RenderRequest request;
+  const rapidjson::Value* scene = reader.take("scene");
+  const rapidjson::Value* implicit = reader.take("implicit");
+  const rapidjson::Value* coordinates[3] = {reader.take("x"), reader.take("y"), reader.take("z")};
+  const int parametric = (coordinates[0] ? 1 : 0) + (coordinates[1] ? 1 : 0) + (coordinates[2] ? 1 : 0);
+  if ((scene ? 1 : 0) + (implicit ? 1 : 0) + (parametric > 0 ? 1 : 0) > 1) {
+    throw InputError("invalid_value", "send one of implicit, x/y/z (parametric) or scene").in_field("scene");
+  }
+  if (scene) {
+    request.scene = decode_scene(*scene, "scene");
+  } else if (parametric > 0) {
+    static const char* const kNames[3] = {"x", "y", "z"};
+    std::array<std::string, 3> xyz;
+    for (int i = 0; i < 3; ++i) {
+      if (!coordinates[i]) {
+        throw InputError("missing_field",
+                         std::string("a parametric surface needs x, y and z; '") + kNames[i] + "' is missing")
+            .in_field(kNames[i]);
+      }
+      xyz[i] = read_string(*coordinates[i], kNames[i]);
+    }
+    request.parametric = xyz;
+  } else {
+    request.implicit = read_string(implicit ? *implicit : reader.require("implicit"), "implicit");
+  }
+  if (const auto* v = reader.take("parameters")) request.parameters = read_strings(*v, "parameters");
+  if (const auto* v = reader.take("mode")) request.mode = read_string(*v, "mode");
+  if (const auto* v = reader.take("name")) request.name = read_string(*v, "name");
+  if (const auto* v = reader.take("box")) request.box = read_box_texts(*v);
+  auto read_size = [&](const char* field, std::size_t& out) {
+    if (const auto* v = reader.take(field)) {
+      if (!v->IsUint()) throw wrong_type(field, "a positive integer");
+      out = v->GetUint();
+    }
+  };
+  read_size("width", request.width);
+  read_size("height", request.height);
+  if (const auto* v = reader.take("aa")) {
+    if (!v->IsUint()) throw wrong_type("aa", "a positive integer");
+    request.antialiasing = v->GetUint();
+  }
+  if (const auto* v = reader.take("method")) request.method = read_string(*v, "method");
+  auto read_point = [&](const char* field) -> std::optional<std::array<double, 3>> {
+    const auto* v = reader.take(field);
+    if (!v) return std::nullopt;
+    if (!v->IsArray() || v->Size() != 3) throw wrong_type(field, "an array of three numbers");
+    std::array<double, 3> p{};
+    for (rapidjson::SizeType i = 0; i < 3; ++i) {
+      if (!(*v)[i].IsNumber()) throw wrong_type(std::string(field) + "[" + std::to_string(i) + "]", "a number");
+      p[i] = (*v)[i].GetDouble();
+    }
+    return p;
+  };
+  request.eye = read_point("eye");
+  request.target = read_point("target");
+  if (const auto* v = reader.take("precision")) request.precision = read_string(*v, "precision");
+  if (const auto* v = reader.take("format")) request.format = read_string(*v, "format");
+  if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = read_timeout_seconds(*v);
+  reader.finish(
+      "implicit, x, y, z, parameters, scene, mode, box, name, width, height, method, aa, eye, target, precision, "
+      "format, timeout_ms");
+  return request;
+}
+
+namespace {
+
+// RFC 4648 base64 with padding.
+std::string encode_base64(std::string_view bytes) {
+  static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  std::size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned v = static_cast<unsigned char>(bytes[i]) << 16 | static_cast<unsigned char>(bytes[i + 1]) << 8 |
+                       static_cast<unsigned char>(bytes[i + 2]);
+    out += kAlphabet[v >> 18];
+    out += kAlphabet[(v >> 12) & 63];
+    out += kAlphabet[(v >> 6) & 63];
+    out += kAlphabet[v & 63];
+  }
+  if (i < bytes.size()) {
+    const bool two = i + 1 < bytes.size();
+    const unsigned v =
+        static_cast<unsigned char>(bytes[i]) << 16 | (two ? static_cast<unsigned char>(bytes[i + 1]) << 8 : 0u);
+    out += kAlphabet[v >> 18];
+    out += kAlphabet[(v >> 12) & 63];
+    out += two ? kAlphabet[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string encode_render_response(const RenderAnswer& answer, bool with_png) {
+  const RenderStats& s = answer.stats;
+  rapidjson::StringBuffer buffer;
+  Writer w(buffer);
+  configure(w);
+  w.StartObject();
+  write_key(w, "width");
+  w.Uint64(s.width);
+  write_key(w, "height");
+  w.Uint64(s.height);
+  write_key(w, "method");
+  write_string(w, to_string(s.method));
+  write_key(w, "mode");
+  write_string(w, s.mode == SdfMode::safe ? "safe" : "fast");
+  write_key(w, "precision");
+  write_string(w, answer.precision);
+  write_key(w, "rays");
+  w.Uint64(s.rays);
+  write_key(w, "mean_evaluations");
+  w.Double(s.mean_evaluations());
+  write_key(w, "max_evaluations");
+  w.Uint(s.max_evaluations);
+  write_key(w, "out_of_steps");
+  w.Uint64(s.out_of_steps);
+  write_key(w, "hits");
+  w.Uint64(s.hits);
+  write_key(w, "shading_evaluations");
+  w.Uint64(s.shading_evaluations);
+  write_key(w, "threads");
+  w.Uint64(s.threads);
+  write_key(w, "elapsed_ms");
+  write_milliseconds(w, s.elapsed_ms);
+  if (with_png) {
+    write_key(w, "png_base64");
+    write_string(w, encode_base64(answer.png));
+  }
+  w.EndObject();
+  return finish(buffer);
 }
 
 std::string encode_implicitize_response(const ImplicitizeResult& result) {

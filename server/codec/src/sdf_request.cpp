@@ -43,20 +43,25 @@ double nearest_double(const Rational& q) {
 
 }  // namespace
 
+SceneBox parse_request_box(const std::vector<std::string>& numbers, const Budget& budget) {
+  SceneBox box = SceneBox::default_box();
+  if (numbers.empty()) return box;
+  if (numbers.size() != 6) throw invalid_box("a box is six numbers x0,y0,z0,x1,y1,z1");
+  const RingPtr ring = Ring::make({"x", "y", "z"});
+  for (std::size_t i = 0; i < 3; ++i) {
+    box.lo[i] = parse_box_number(numbers[i], ring, budget);
+    box.hi[i] = parse_box_number(numbers[i + 3], ring, budget);
+  }
+  return box;
+}
+
 SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& caller_budget) {
   Budget budget = caller_budget;
   if (request.timeout_seconds) budget.set_timeout(*request.timeout_seconds);
   const SdfMode mode = parse_sdf_mode(request.mode);
   check_glsl_name(request.name);
   const RingPtr ring = Ring::make({"x", "y", "z"});
-  SceneBox box = SceneBox::default_box();
-  if (!request.box.empty()) {
-    if (request.box.size() != 6) throw invalid_box("a box is six numbers x0,y0,z0,x1,y1,z1");
-    for (std::size_t i = 0; i < 3; ++i) {
-      box.lo[i] = parse_box_number(request.box[i], ring, budget);
-      box.hi[i] = parse_box_number(request.box[i + 3], ring, budget);
-    }
-  }
+  const SceneBox box = parse_request_box(request.box, budget);
   SdfAnswer answer;
   answer.function = request.name + "_sdf";
   answer.mode = mode == SdfMode::safe ? "safe" : "fast";

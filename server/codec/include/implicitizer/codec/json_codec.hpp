@@ -18,6 +18,7 @@
 
 #include "implicitizer/codec/groebner_request.hpp"
 #include "implicitizer/codec/implicitize_request.hpp"
+#include "implicitizer/codec/render_request.hpp"
 #include "implicitizer/codec/resultant_request.hpp"
 #include "implicitizer/codec/sdf_request.hpp"
 #include "implicitizer/core/errors.hpp"
@@ -56,6 +57,22 @@ ResultantRequest decode_resultant_request(std::string_view body, const JsonLimit
 /// errors of decode_scene() (fields "scene.children[1]…"), and `invalid_value`
 /// (field "scene") when both implicit and scene are given.
 SdfRequest decode_sdf_request(std::string_view body, const JsonLimits& limits = {});
+
+/// Reads a `POST /v1/render` body: the surface as for /v1/sdf (`"implicit": F` or
+/// `"scene": SCENE`) or parametric (`"x", "y", "z": E`, `"parameters": [..]?`), and
+/// `"mode"?, "box"?, "name"?, "width"?, "height"?, "method"?, "aa"?, "eye": [x, y,
+/// z]?, "target": [x, y, z]?, "precision"?, "format": "png"|"json"?, "timeout_ms"?`.
+/// Throws InputError as decode_sdf_request(), `wrong_type` (sizes must be positive
+/// integers, eye and target three numbers), `missing_field` ("x": some of x, y, z
+/// but not all) and `invalid_value` ("scene": more than one surface).
+RenderRequest decode_render_request(std::string_view body, const JsonLimits& limits = {});
+
+/// `{"width", "height", "method", "mode", "precision", "rays", "mean_evaluations",
+/// "max_evaluations", "out_of_steps", "hits", "shading_evaluations", "threads",
+/// "elapsed_ms"}`, and `"png_base64"` (the PNG in base64) when `with_png`: what
+/// `implicitizer render --json` prints (without the PNG) and POST /v1/render answers
+/// with `"format": "json"` (with it).
+std::string encode_render_response(const RenderAnswer& answer, bool with_png);
 
 /// `{"implicit", "degree", "variables", "method", "verified", "elapsed_ms", "stats":
 /// {"pairs", "product_criterion", "chain_criterion", "reductions", "zero_reductions",

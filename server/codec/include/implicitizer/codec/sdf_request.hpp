@@ -50,6 +50,12 @@ struct SdfAnswer {
   std::vector<SdfLeafSummary> leaves;  ///< the scene's polynomial leaves
 };
 
+/// The scene box of a request's `box` field: six exact numbers x0, y0, z0, x1, y1,
+/// z1 ("0.25", "1e-30", "-3/7"); empty: SceneBox::default_box(). Throws InputError
+/// `invalid_box` (field "box") when there are not six numbers; the frame's checks
+/// (hi > lo, magnitudes) are make_scene_frame()'s. Shared with POST /v1/render.
+SceneBox parse_request_box(const std::vector<std::string>& box, const Budget& budget = Budget());
+
 /// Answers `request` under `budget` (whose deadline the request's timeout, when
 /// present, replaces). Throws InputError with its field
 /// set: parse errors and `unknown_variable` ("implicit": only x, y, z may occur),

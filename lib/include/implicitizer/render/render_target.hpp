@@ -1,0 +1,112 @@
+#pragma once
+/// \file
+/// What the renderer draws: a compiled scene (compiled_scene.hpp), evaluated in C++
+/// exactly as its GLSL is (float by default: CompiledScene::evaluate<float> runs the
+/// GLSL's operations in the GLSL's order with its float constants, so a preview
+/// shows what a shader using the exported function shows; double is offered for
+/// comparison and costs about the same on a CPU). An implicit equation is a scene
+/// with one `implicit` leaf, a parametric surface one `parametric` leaf.
+///
+/// When the scene is a single polynomial leaf the target also keeps its algebraic
+/// surface: the equation F, and G(u) = F(c + u/s)/M, F moved exactly to the frame
+/// of the leaf's box (scene_frame.hpp), with its value-and-gradient program in
+/// double. That serves two things: normals from the analytic gradient (∇_p F is
+/// parallel to ∇_u G, the frame being a translation and one isotropic scale, and G's
+/// coefficients are of size ≤ 1, so double evaluation near the box is well
+/// conditioned), and the exact marcher (march_ray.hpp), which isolates the first
+/// root of F on the ray. Other scenes get normals by the tetrahedron technique.
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "implicitizer/core/budget.hpp"
+#include "implicitizer/polynomial/polynomial.hpp"
+#include "implicitizer/render/ray_polynomial.hpp"
+#include "implicitizer/scene/compiled_scene.hpp"
+#include "implicitizer/scene/scene_node.hpp"
+#include "implicitizer/sdf/polynomial_program.hpp"
+
+namespace implicitizer {
+
+/// The arithmetic the scene is evaluated in.
+enum class EvaluationPrecision : std::uint8_t {
+  single,      ///< float: what the GLSL computes (the default)
+  double_run,  ///< double, with the double-rounded constants
+};
+
+/// The algebraic surface of a scene that is one polynomial leaf.
+struct AlgebraicSurface {
+  Polynomial equation;             ///< F(x, y, z): the surface is F = 0 (a parametric leaf's implicitized equation)
+  Polynomial framed;               ///< G(u, v, w) = F(centre + u/scale)/M, exact; G < 0 exactly where F < 0
+  std::array<double, 3> centre{};  ///< the frame's centre c (exactly a float)
+  double scale = 1;                ///< the frame's scale s (exactly a float): u = (p − c)·s
+  PolynomialProgram program;       ///< G and ∇G (run in double)
+  /// G prepared for exact root isolation along rays (shared: one per target).
+  std::shared_ptr<const RayPolynomialContext> ray_context;
+  /// The scene's value is G's estimate (or bound) only in [lo, hi], and positive
+  /// outside, so the zeros of the scene are the zeros of F there: the cube
+  /// |u_i| ≤ 2 of the leaf's frame (FastSdf/SafeSdf::kFarField; beyond it the value
+  /// is the distance to the box), or for a trimmed patch the trimming box.
+  std::array<double, 3> lo{}, hi{};
+  bool trimmed = false;  ///< a trimmed parametric patch: an unsigned sheet, no inside
+};
+
+/// A scene ready to be ray-marched. Copyable; every method is const and thread-safe.
+class RenderTarget {
+ public:
+  /// Compiles `root` with `options` (compile_scene) and keeps the algebraic surface
+  /// when the root is a polynomial leaf. Throws what compile_scene() throws.
+  static RenderTarget compile(const SceneNode& root, const SceneOptions& options,
+                              EvaluationPrecision precision = EvaluationPrecision::single,
+                              const Budget& budget = Budget());
+
+  /// The scene's value at p in the target's precision (p is rounded to float for a
+  /// float run, as a shader receives it), returned as a double. Negative inside.
+  double evaluate(const std::array<double, 3>& p) const;
+
+  /// The unit outward normal at p (the direction in which the value grows): from
+  /// the analytic gradient of G when the target has an algebraic surface and the
+  /// gradient there is finite and nonzero, else by the tetrahedron technique
+  /// (tetrahedron_normal). Adds the scene evaluations spent to *evaluations.
+  /// Returns (0, 0, 0) when neither gives a direction (a flat or NaN value).
+  std::array<double, 3> normal(const std::array<double, 3>& p, std::uint64_t* evaluations = nullptr) const;
+
+  /// The tetrahedron technique: N = Σ_i k_i f(p + h·k_i), k_i the vertices
+  /// (1,−1,−1), (−1,−1,1), (−1,1,−1), (1,1,1), normalised; four evaluations.
+  /// Why it works: Taylor gives f(p + h k_i) = f(p) + h k_i·∇f + O(h²); Σ k_i = 0
+  /// removes f(p), and Σ k_i k_iᵀ = 4I (each diagonal entry sums four 1s, each
+  /// off-diagonal one two 1s and two −1s), so N = 4h∇f + O(h²). The first thesis'
+  /// proof writes Σ k_i·k_i = (1, 1, 1) instead, which is not the identity its own
+  /// last step uses. h = 1e-3·length_unit().
+  std::array<double, 3> tetrahedron_normal(const std::array<double, 3>& p, std::uint64_t* evaluations = nullptr) const;
+
+  /// The algebraic surface, when the scene is a single polynomial leaf.
+  const std::optional<AlgebraicSurface>& algebraic() const { return algebraic_; }
+
+  /// The scene's length unit: half the largest half side of the scene box (1 for
+  /// the default box [−2, 2]³). Defaults of the renderer given in the first
+  /// thesis' units (its hit threshold 1e-4, its miss distance 100, its eye
+  /// (3, 3, 5), its shadow and occlusion distances) are multiplied by it.
+  double length_unit() const { return length_unit_; }
+  /// The scene box's centre (the default look-at point).
+  const std::array<double, 3>& box_centre() const { return box_centre_; }
+  /// The compiled scene.
+  const CompiledScene& scene() const { return scene_; }
+  /// The mode it was compiled in.
+  SdfMode mode() const { return scene_.mode(); }
+  /// The arithmetic of evaluate().
+  EvaluationPrecision precision() const { return precision_; }
+
+ private:
+  RenderTarget(CompiledScene scene, EvaluationPrecision precision) : scene_(std::move(scene)), precision_(precision) {}
+
+  CompiledScene scene_;
+  EvaluationPrecision precision_;
+  double length_unit_ = 1;
+  std::array<double, 3> box_centre_{};
+  std::optional<AlgebraicSurface> algebraic_;
+};
+
+}  // namespace implicitizer

@@ -1,0 +1,273 @@
+#include "implicitizer/render/march_ray.hpp"
+
+#include <cmath>
+
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/render/root_isolation.hpp"
+
+namespace implicitizer {
+namespace {
+
+// f(t) = value(o + t·d), counting evaluations.
+class RayFunction {
+ public:
+  RayFunction(const RenderTarget& target, const Ray& ray, MarchResult& result)
+      : target_(target), ray_(ray), result_(result) {}
+
+  double operator()(double t) const {
+    ++result_.evaluations;
+    const auto& o = ray_.origin;
+    const auto& d = ray_.direction;
+    return target_.evaluate({o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]});
+  }
+
+ private:
+  const RenderTarget& target_;
+  const Ray& ray_;
+  MarchResult& result_;
+};
+
+void hit_at(MarchResult& r, double t) {
+  r.hit = true;
+  r.t = t;
+}
+
+// Hart's sphere tracing. A NaN value fails every comparison: it is neither a hit
+// nor a step, so the ray stops as a miss (counted by the caller as no hit).
+void march_sphere(const RayFunction& f, const MarchParams& params, MarchResult& r) {
+  double t = params.t_min;
+  for (; r.steps < params.max_steps; ++r.steps) {
+    const double value = f(t);
+    if (value < params.epsilon) return hit_at(r, t);
+    if (!(value < HUGE_VAL)) return;  // NaN or +inf: nothing to step by
+    t += value;
+    if (t > params.t_max) return;
+  }
+  r.out_of_steps = true;
+}
+
+// Keinert et al. 2014, "Enhanced sphere tracing", with the overlap test of the
+// unbounding intervals. The first step has no previous radius: it is relaxed like
+// the others and checked at the next point against the start point's radius (the
+// Bálint et al. formula the second thesis implements divides 0 by 0 there). Unlike
+// Keinert et al., ω is not dropped to 1 for the rest of the ray after a failed
+// check: only the corrective step is plain, and the next step is relaxed (and
+// checked) again. Every relaxed step is still checked, so the safety argument is
+// the same; the first relaxed step into a scene's box nearly always fails (the
+// far-field distance to the box is much larger than the value inside it), and
+// keeping ω = 1 after it made enhanced cost one evaluation more than sphere on
+// every surface measured (docs/render.md).
+void march_enhanced(const RayFunction& f, const MarchParams& params, MarchResult& r) {
+  const double omega = params.omega;
+  double t = params.t_min;
+  double previous_t = t, previous_radius = 0;
+  bool relaxed = false;  // whether t was reached by a relaxed step (to be checked)
+  for (; r.steps < params.max_steps; ++r.steps) {
+    const double value = f(t);
+    if (relaxed && !(std::abs(value) + previous_radius >= t - previous_t)) {
+      // The relaxed step may have jumped over the surface: step back and take the
+      // plain sphere step from the previous point (always covered by its interval).
+      t = previous_t + previous_radius;
+      relaxed = false;
+      continue;
+    }
+    if (value < params.epsilon) return hit_at(r, t);
+    if (!(value < HUGE_VAL)) return;
+    previous_t = t;
+    previous_radius = value;
+    relaxed = omega > 1;
+    t += omega * value;
+    if (t > params.t_max) {
+      // Beyond t_max only if the unrelaxed step is too: the relaxed one is unchecked.
+      if (previous_t + value > params.t_max) return;
+      relaxed = false;
+      t = previous_t + value;
+    }
+  }
+  r.out_of_steps = true;
+}
+
+// Newton's method on f(t) (001, Algorithm 5), and on g(t) = f(t)·(t − T)/t with
+// T = t_max (001, Algorithm 6: the factor adds a root at T, so that a ray with no
+// root drifts forward instead of stalling). Derivatives by a forward difference.
+// Guards: a slope below min_slope, a non-finite step, or a step to behind t_min
+// (the seed's "dist/ddist > t") take the sphere step |f| instead.
+// A Newton step that lands inside the solid (f < −ε after f ≥ ε at the previous
+// point) has bracketed a root: it is refined in the bracket by regula falsi with
+// the Illinois modification (each evaluation keeps a sign change, so it converges
+// to a root of the bracket), to |f| < ε or a bracket narrower than ε. The second
+// thesis returns the next Newton iterate from the inside point instead, which can
+// be anywhere.
+void refine_bracket(const RayFunction& f, const MarchParams& params, double a, double fa, double b, double fb,
+                    MarchResult& r) {
+  int side = 0;  // which end was kept last (Illinois: halve the other's value)
+  while (b - a > params.epsilon && r.steps < params.max_steps) {
+    ++r.steps;
+    double c = b - fb * (b - a) / (fb - fa);
+    if (!(c > a && c < b)) c = 0.5 * (a + b);
+    const double fc = f(c);
+    if (std::abs(fc) < params.epsilon) return hit_at(r, c);
+    if (fc > 0) {
+      a = c;
+      fa = fc;
+      if (side == 1) fb *= 0.5;
+      side = 1;
+    } else {
+      b = c;
+      fb = fc;
+      if (side == -1) fa *= 0.5;
+      side = -1;
+    }
+  }
+  hit_at(r, a);  // the outer end: f(a) > 0, within ε of the root (or out of steps)
+}
+
+void march_newton(const RayFunction& f, const MarchParams& params, bool forward, MarchResult& r) {
+  double t = params.t_min;
+  const double delta = params.derivative_step;
+  const double far = params.t_max;
+  double previous_t = t, previous_value = 0;
+  for (; r.steps < params.max_steps; ++r.steps) {
+    const double value = f(t);
+    if (value < params.epsilon) {
+      if (r.steps == 0 || value > -params.epsilon) return hit_at(r, t);
+      return refine_bracket(f, params, previous_t, previous_value, t, value, r);
+    }
+    if (!std::isfinite(value)) return;
+    previous_t = t;
+    previous_value = value;
+    const double slope = (f(t + delta) - value) / delta;
+    double next = HUGE_VAL;
+    if (forward) {
+      // g = f·(t − T)/t, g' = f'·(t − T)/t + f·T/t² (the thesis prints this last term
+      // garbled). At t = 0 g is undefined: take the sphere step.
+      if (t > 0) {
+        const double factor = (t - far) / t;
+        const double g = value * factor;
+        const double g_slope = slope * factor + value * far / (t * t);
+        if (std::abs(g_slope) >= params.min_slope) next = t - g / g_slope;
+      }
+    } else if (std::abs(slope) >= params.min_slope) {
+      next = t - value / slope;
+    }
+    t = std::isfinite(next) && next >= params.t_min ? next : t + std::abs(value);
+    if (t > params.t_max) return;
+  }
+  r.out_of_steps = true;
+}
+
+// The first zero of the scene's value on the ray, for an algebraic target: the
+// ray is clipped to [lo, hi] (outside, the value is positive) and the first root of
+// G in the clipped segment is isolated (root_isolation.hpp) on the ray moved to
+// the frame, u = (o − c)·s + t·(d·s), which keeps t. Where the clipped segment
+// starts inside the solid (G < 0: the box cuts the solid, or the eye is inside), the
+// scene's value changes sign there, and the value-based methods stop there: so does
+// this one (not for a trimmed sheet, which has no inside).
+void march_exact(const RenderTarget& target, const Ray& ray, const MarchParams& params, const Budget& budget,
+                 MarchResult& r) {
+  const AlgebraicSurface& a = *target.algebraic();
+  double t0 = params.t_min, t1 = params.t_max;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double o = ray.origin[i], d = ray.direction[i];
+    if (d == 0) {
+      if (o < a.lo[i] || o > a.hi[i]) return;
+      continue;
+    }
+    double enter = (a.lo[i] - o) / d, leave = (a.hi[i] - o) / d;
+    if (enter > leave) std::swap(enter, leave);
+    t0 = std::max(t0, enter);
+    t1 = std::min(t1, leave);
+  }
+  if (!(t0 <= t1)) return;
+  std::array<double, 3> origin{}, direction{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    origin[i] = (ray.origin[i] - a.centre[i]) * a.scale;
+    direction[i] = ray.direction[i] * a.scale;
+  }
+  ++r.evaluations;  // the sign of G where the segment starts
+  if (!a.trimmed) {
+    const ValueAndGradient<double> start =
+        a.program.evaluate(origin[0] + t0 * direction[0], origin[1] + t0 * direction[1], origin[2] + t0 * direction[2]);
+    if (start.value < 0) return hit_at(r, t0);
+  }
+  RootIsolationOptions options;
+  options.scale = target.length_unit();
+  const std::optional<RayRoot> root =
+      first_ray_root(*a.ray_context, origin, direction, t0, t1, options, nullptr, budget);
+  if (!root) return;
+  r.steps = static_cast<std::uint32_t>(root->subdivisions);
+  hit_at(r, root->t);
+}
+
+}  // namespace
+
+const char* to_string(MarchMethod method) {
+  switch (method) {
+    case MarchMethod::sphere:
+      return "sphere";
+    case MarchMethod::enhanced:
+      return "enhanced";
+    case MarchMethod::newton:
+      return "newton";
+    case MarchMethod::forward_newton:
+      return "forward_newton";
+    case MarchMethod::exact:
+      return "exact";
+  }
+  return "sphere";
+}
+
+MarchMethod parse_march_method(const std::string& name) {
+  for (MarchMethod m : {MarchMethod::sphere, MarchMethod::enhanced, MarchMethod::newton, MarchMethod::forward_newton,
+                        MarchMethod::exact}) {
+    if (name == to_string(m)) return m;
+  }
+  throw InputError("invalid_value",
+                   "unknown method '" + name + "' (expected sphere, enhanced, newton, forward_newton or exact)")
+      .in_field("method");
+}
+
+bool is_method_applicable(MarchMethod method, const RenderTarget& target) {
+  return method != MarchMethod::exact || target.algebraic().has_value();
+}
+
+MarchParams default_march_params(const RenderTarget& target) {
+  MarchParams params;
+  const double unit = target.length_unit();
+  params.t_max *= unit;
+  params.epsilon *= unit;
+  params.derivative_step *= unit;
+  return params;
+}
+
+MarchResult march_ray(const RenderTarget& target, const Ray& ray, MarchMethod method, const MarchParams& params,
+                      const Budget& budget) {
+  MarchResult result;
+  const RayFunction f(target, ray, result);
+  switch (method) {
+    case MarchMethod::sphere:
+      march_sphere(f, params, result);
+      return result;
+    case MarchMethod::enhanced:
+      march_enhanced(f, params, result);
+      return result;
+    case MarchMethod::newton:
+      march_newton(f, params, false, result);
+      return result;
+    case MarchMethod::forward_newton:
+      march_newton(f, params, true, result);
+      return result;
+    case MarchMethod::exact:
+      break;
+  }
+  if (!target.algebraic()) {
+    throw InputError("method_not_applicable",
+                     "method 'exact' needs an algebraic surface: an implicit equation, a parametric surface, or a "
+                     "scene that is one polynomial leaf")
+        .in_field("method");
+  }
+  march_exact(target, ray, params, budget, result);
+  return result;
+}
+
+}  // namespace implicitizer

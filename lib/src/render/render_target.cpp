@@ -1,0 +1,96 @@
+#include "implicitizer/render/render_target.hpp"
+
+#include <cmath>
+
+#include "implicitizer/core/rational.hpp"
+#include "implicitizer/sdf/fast_sdf.hpp"
+#include "implicitizer/sdf/safe_sdf.hpp"
+#include "implicitizer/sdf/scene_frame.hpp"
+
+namespace implicitizer {
+namespace {
+
+double to_double(const Rational& q) { return to_mpq(q).get_d(); }
+
+// The tetrahedron's vertices (000, Prop. 1.3).
+constexpr std::array<std::array<double, 3>, 4> kTetrahedron{{{1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}, {1, 1, 1}}};
+
+std::array<double, 3> normalised(const std::array<double, 3>& v) {
+  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if (!(n > 0) || !std::isfinite(n)) return {0, 0, 0};
+  return {v[0] / n, v[1] / n, v[2] / n};
+}
+
+}  // namespace
+
+RenderTarget RenderTarget::compile(const SceneNode& root, const SceneOptions& options, EvaluationPrecision precision,
+                                   const Budget& budget) {
+  RenderTarget target(compile_scene(root, options, budget), precision);
+  double half = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double lo = to_double(options.box.lo[i]), hi = to_double(options.box.hi[i]);
+    target.box_centre_[i] = (lo + hi) / 2;
+    half = std::max(half, (hi - lo) / 2);
+  }
+  // The default box has half side 2 and the first thesis' scene is of that size.
+  target.length_unit_ = half / 2;
+
+  // A scene of one node whose only leaf is polynomial: the root is that leaf.
+  const CompiledScene& scene = target.scene_;
+  if (scene.node_count() == 1 && scene.leaves().size() == 1) {
+    const PolynomialLeaf& leaf = scene.leaves().front();
+    const SceneFrame frame = make_scene_frame(leaf.frame_box());
+    Polynomial framed = frame_polynomial(leaf.equation(), frame, budget);
+    PolynomialProgram program = PolynomialProgram::compile(framed);
+    auto context = std::make_shared<const RayPolynomialContext>(framed);
+    AlgebraicSurface surface{leaf.equation(),    std::move(framed),  {}, to_double(frame.scale),
+                             std::move(program), std::move(context), {}, {},
+                             leaf.trimmed()};
+    for (std::size_t i = 0; i < 3; ++i) surface.centre[i] = to_double(frame.centre[i]);
+    if (surface.trimmed) {
+      surface.lo = {leaf.trim_lo().x, leaf.trim_lo().y, leaf.trim_lo().z};
+      surface.hi = {leaf.trim_hi().x, leaf.trim_hi().y, leaf.trim_hi().z};
+    } else {
+      static_assert(FastSdf::kFarField == SafeSdf::kFarField);
+      for (std::size_t i = 0; i < 3; ++i) {
+        surface.lo[i] = surface.centre[i] - FastSdf::kFarField / surface.scale;
+        surface.hi[i] = surface.centre[i] + FastSdf::kFarField / surface.scale;
+      }
+    }
+    target.algebraic_ = std::move(surface);
+  }
+  return target;
+}
+
+double RenderTarget::evaluate(const std::array<double, 3>& p) const {
+  if (precision_ == EvaluationPrecision::single) {
+    return scene_.evaluate<float>(
+        Vec3<float>{static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
+  }
+  return scene_.evaluate<double>(Vec3<double>{p[0], p[1], p[2]});
+}
+
+std::array<double, 3> RenderTarget::normal(const std::array<double, 3>& p, std::uint64_t* evaluations) const {
+  if (algebraic_) {
+    const AlgebraicSurface& a = *algebraic_;
+    const ValueAndGradient<double> g = a.program.evaluate(
+        (p[0] - a.centre[0]) * a.scale, (p[1] - a.centre[1]) * a.scale, (p[2] - a.centre[2]) * a.scale);
+    const std::array<double, 3> n = normalised(g.gradient);
+    if (n[0] != 0 || n[1] != 0 || n[2] != 0) return n;
+  }
+  return tetrahedron_normal(p, evaluations);
+}
+
+std::array<double, 3> RenderTarget::tetrahedron_normal(const std::array<double, 3>& p,
+                                                       std::uint64_t* evaluations) const {
+  const double h = 1e-3 * length_unit_;
+  std::array<double, 3> sum{0, 0, 0};
+  for (const auto& k : kTetrahedron) {
+    const double f = evaluate({p[0] + h * k[0], p[1] + h * k[1], p[2] + h * k[2]});
+    for (std::size_t i = 0; i < 3; ++i) sum[i] += k[i] * f;
+  }
+  if (evaluations) *evaluations += kTetrahedron.size();
+  return normalised(sum);
+}
+
+}  // namespace implicitizer

@@ -1,0 +1,76 @@
+#pragma once
+/// \file
+/// A render request as the outside world states it (the `POST /v1/render` body, or
+/// `implicitizer render`'s arguments), its answer, and the one function that
+/// computes it, shared by the command line and the HTTP handler: an implicit
+/// surface, a parametric surface or a scene, drawn by the preview renderer
+/// (lib/include/implicitizer/render/) into a PNG.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "implicitizer/core/budget.hpp"
+#include "implicitizer/render/render_image.hpp"
+#include "implicitizer/scene/scene_node.hpp"
+
+namespace implicitizer {
+
+/// The fields of a request, still as given.
+struct RenderRequest {
+  std::string implicit;  ///< F(x, y, z): the surface F = 0 (when neither parametric nor scene is given)
+  /// x, y, z of a parametric surface (implicitized by the library, then drawn as its
+  /// implicit equation: the whole surface, untrimmed).
+  std::optional<std::array<std::string, 3>> parametric;
+  std::optional<std::vector<std::string>> parameters;  ///< the parametric surface's parameters, in order
+  std::optional<SceneNode> scene;                      ///< a decoded scene (replaces the others)
+  std::string mode = "fast";                           ///< "fast" or "safe" (docs/sdf.md)
+  std::vector<std::string> box;                 ///< six exact numbers, or empty: [-2, 2]^3 (see parse_request_box)
+  std::string name = "surface";                 ///< the scene's name (as for /v1/sdf; it names nothing in a PNG)
+  std::size_t width = 256;                      ///< pixels
+  std::size_t height = 256;                     ///< pixels
+  std::string method = "sphere";                ///< sphere, enhanced, newton, forward_newton, exact
+  std::uint32_t antialiasing = 2;               ///< AA: AA×AA samples per pixel
+  std::optional<std::array<double, 3>> eye;     ///< default: the box centre + (3, 3, 5)·unit
+  std::optional<std::array<double, 3>> target;  ///< default: the box centre
+  std::string precision = "float";              ///< "float" (what the GLSL computes) or "double"
+  std::string format = "png";  ///< the endpoint's answer: "png" (image/png) or "json" (stats + png_base64)
+  /// Wall-time limit in seconds; absent means the caller's budget alone.
+  std::optional<double> timeout_seconds;
+};
+
+/// The sizes a request may ask for.
+struct RenderLimits {
+  std::size_t max_side = 4096;                      ///< width and height at most this
+  std::uint64_t max_rays = std::uint64_t{4} << 20;  ///< width·height·AA² at most this (1024²·2²)
+};
+
+/// What a request computed.
+struct RenderAnswer {
+  std::string png;        ///< the PNG file
+  RenderStats stats;      ///< size, method, mode, rays, evaluations, hits, out of steps, time
+  std::string precision;  ///< "float" or "double"
+};
+
+/// Checks the sizes of `request` against `limits` before anything is computed.
+/// Throws InputError `invalid_size` (field "width"/"height": 0 or above max_side),
+/// `invalid_value` (field "aa": 0 or above 8), `render_too_large` (field "width":
+/// more than max_rays primary rays; HTTP 413).
+void check_render_size(const RenderRequest& request, const RenderLimits& limits = {});
+
+/// Answers `request` under `budget` (whose deadline the request's timeout, when
+/// present, replaces), with `threads` render threads (0: one per core). Throws
+/// InputError: those of check_render_size(), parse errors and `unknown_variable`
+/// ("implicit"; "x", "y", "z" for a parametric surface), `invalid_value` ("mode",
+/// "method", "precision", "format", "scene": more than one of implicit, x/y/z,
+/// scene), `missing_field` ("x": some but not all of x, y, z), `invalid_box`,
+/// `invalid_camera` ("eye", "target"), `method_not_applicable` ("method": exact on a
+/// scene that is not one polynomial leaf), the errors of compile_scene();
+/// NoSingleEquation for a parametric surface that is not a surface; LimitExceeded.
+RenderAnswer answer_render_request(const RenderRequest& request, const Budget& budget = Budget(),
+                                   const RenderLimits& limits = {}, std::size_t threads = 0);
+
+}  // namespace implicitizer

@@ -1,0 +1,56 @@
+#include "handlers/render.hpp"
+
+#include <cstdio>
+
+#include "implicitizer/codec/json_codec.hpp"
+
+namespace implicitizer::server {
+namespace {
+
+std::string format_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", value);
+  return text;
+}
+
+Response make_png_response(const RenderAnswer& answer) {
+  const RenderStats& s = answer.stats;
+  Response response = make_response(http::status::ok, answer.png, "image/png");
+  response.set("X-Render-Width", std::to_string(s.width));
+  response.set("X-Render-Height", std::to_string(s.height));
+  response.set("X-Render-Method", to_string(s.method));
+  response.set("X-Render-Mode", s.mode == SdfMode::safe ? "safe" : "fast");
+  response.set("X-Render-Precision", answer.precision);
+  response.set("X-Render-Rays", std::to_string(s.rays));
+  response.set("X-Render-Hits", std::to_string(s.hits));
+  response.set("X-Render-Out-Of-Steps", std::to_string(s.out_of_steps));
+  response.set("X-Render-Mean-Evaluations", format_number(s.mean_evaluations()));
+  response.set("X-Render-Max-Evaluations", std::to_string(s.max_evaluations));
+  response.set("X-Render-Elapsed-Ms", format_number(s.elapsed_ms));
+  return response;
+}
+
+}  // namespace
+
+HandlerResult handle_render(const Request& request, const HandlerContext& context) {
+  RenderRequest decoded;
+  try {
+    decoded = decode_render_request(request.body(), JsonLimits{context.config.json_max_depth});
+    check_render_size(decoded);
+  } catch (const InputError& e) {
+    const http::status status =
+        e.code() == "render_too_large" ? http::status::payload_too_large : http::status::bad_request;
+    return make_json_response(status, encode_error(e));
+  }
+  Computation computation;
+  computation.budget = make_computation_budget(decoded.timeout_seconds, context.config);
+  decoded.timeout_seconds.reset();  // the budget's deadline already counts from now
+  computation.run = [decoded = std::move(decoded), budget = computation.budget]() {
+    const RenderAnswer answer = answer_render_request(decoded, budget, RenderLimits{}, 1);
+    if (decoded.format == "json") return make_json_response(http::status::ok, encode_render_response(answer, true));
+    return make_png_response(answer);
+  };
+  return computation;
+}
+
+}  // namespace implicitizer::server

@@ -1,0 +1,125 @@
+// Tests of lib/src/render/render_image.cpp: the image and statistics do not depend
+// on the number of threads; rays that run out of steps are counted misses drawn as
+// background; the budget stops a render and says why; refusals; the PNG of a
+// render decodes to the same pixels.
+
+#include "implicitizer/render/render_image.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/render/png_codec.hpp"
+#include "render/render_support.hpp"
+
+namespace implicitizer {
+namespace {
+
+RenderSettings settings_for(const RenderTarget& target, std::size_t w, std::size_t h, std::uint32_t aa) {
+  RenderSettings s;
+  s.width = w;
+  s.height = h;
+  s.antialiasing = aa;
+  s.camera = default_camera(target);
+  s.march = default_render_march_params(target, s.camera);
+  return s;
+}
+
+TEST(RenderImage, ThreadsGiveTheSameImage) {
+  const RenderTarget target =
+      test::implicit_target("(x^2+y^2+z^2+3)^2-16*(x^2+y^2)", test::axis_box({-3, -3, -1}, {3, 3, 1}));
+  RenderSettings s = settings_for(target, 70, 50, 2);
+  s.tile_size = 8;
+  s.threads = 1;
+  const RenderResult one = render_image(target, s);
+  s.threads = 3;
+  const RenderResult three = render_image(target, s);
+  EXPECT_TRUE(one.image == three.image);
+  EXPECT_EQ(one.stats.evaluations, three.stats.evaluations);
+  EXPECT_EQ(one.stats.hits, three.stats.hits);
+  EXPECT_EQ(one.stats.max_evaluations, three.stats.max_evaluations);
+  EXPECT_EQ(one.stats.shading_evaluations, three.stats.shading_evaluations);
+  EXPECT_EQ(three.stats.threads, 3u);
+  EXPECT_EQ(one.stats.rays, 70u * 50u * 4u);
+  EXPECT_GT(one.stats.hits, one.stats.rays / 10);
+  EXPECT_LT(one.stats.hits, one.stats.rays);
+  EXPECT_GT(one.stats.mean_evaluations(), 1.0);
+}
+
+TEST(RenderImage, OutOfStepsRaysAreCountedMissesDrawnAsBackground) {
+  const RenderTarget target = test::implicit_target("x^2+y^2+z^2-1");
+  RenderSettings s = settings_for(target, 40, 40, 1);
+  const RenderResult full = render_image(target, s);
+  ASSERT_GT(full.stats.hits, 50u);
+  EXPECT_EQ(full.stats.out_of_steps, 0u);
+  s.march.max_steps = 3;
+  const RenderResult starved = render_image(target, s);
+  EXPECT_GT(starved.stats.out_of_steps, 0u);
+  EXPECT_LT(starved.stats.hits, full.stats.hits);
+  std::size_t background = 0;
+  for (std::size_t y = 0; y < 40; ++y) {
+    for (std::size_t x = 0; x < 40; ++x) {
+      if (starved.image.pixel(x, y) == std::array<std::uint8_t, 3>{242, 242, 242}) ++background;
+    }
+  }
+  EXPECT_EQ(background, starved.stats.rays - starved.stats.hits);
+  EXPECT_LE(starved.stats.max_evaluations, 3u);
+}
+
+TEST(RenderImage, TheBudgetStopsTheRenderAndSaysWhy) {
+  const RenderTarget target = test::implicit_target("x^2+y^2+z^2-1");
+  const RenderSettings s = settings_for(target, 64, 64, 1);
+  Budget cancelled;
+  cancelled.cancel();
+  try {
+    render_image(target, s, cancelled);
+    ADD_FAILURE() << "rendered under a cancelled budget";
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit(), Limit::cancelled);
+    EXPECT_NE(std::string(e.what()).find("render stopped after 0 of 16 tiles"), std::string::npos) << e.what();
+  }
+  const Budget expired = Budget::with_timeout(1e-9);
+  try {
+    render_image(target, s, expired);
+    ADD_FAILURE() << "rendered past its deadline";
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit(), Limit::time);
+  }
+}
+
+TEST(RenderImage, Refusals) {
+  const RenderTarget scene = RenderTarget::compile(make_node(NodeKind::sphere, {{"radius", 1.0}}), SceneOptions{});
+  auto code_of = [&](const RenderSettings& s) {
+    try {
+      render_image(scene, s);
+    } catch (const InputError& e) {
+      return e.code() + "@" + e.field();
+    }
+    return std::string("rendered");
+  };
+  RenderSettings s = settings_for(scene, 8, 8, 1);
+  EXPECT_EQ(code_of(s), "rendered");
+  s.method = MarchMethod::exact;
+  EXPECT_EQ(code_of(s), "method_not_applicable@method");
+  s = settings_for(scene, 8, 8, 0);
+  EXPECT_EQ(code_of(s), "invalid_value@aa");
+  s = settings_for(scene, 0, 8, 1);
+  EXPECT_EQ(code_of(s), "invalid_size@size");
+  s = settings_for(scene, 20000, 8, 1);
+  EXPECT_EQ(code_of(s), "invalid_size@size");
+}
+
+TEST(RenderImage, ThePngOfARenderDecodesToItsPixels) {
+  const RenderTarget target = test::implicit_target("x^2+y^2+z^2-1");
+  const RenderResult r = render_image(target, settings_for(target, 33, 17, 1));
+  const Image back = decode_png(encode_png(r.image));
+  EXPECT_EQ(back.width(), 33u);
+  EXPECT_EQ(back.height(), 17u);
+  EXPECT_TRUE(back == r.image);
+  EXPECT_EQ(back.pixel(0, 0), (std::array<std::uint8_t, 3>{242, 242, 242}));   // the seed's grey 0.95
+  EXPECT_NE(back.pixel(16, 8), (std::array<std::uint8_t, 3>{242, 242, 242}));  // the sphere in the middle
+}
+
+}  // namespace
+}  // namespace implicitizer
