@@ -25,9 +25,9 @@ TEST(RenderTarget, KeepsTheAlgebraicSurfaceOfOnePolynomialLeaf) {
   ASSERT_TRUE(sphere.algebraic().has_value());
   EXPECT_EQ(sphere.algebraic()->equation.total_degree(), 2);
   EXPECT_FALSE(sphere.algebraic()->trimmed);
-  // The drawn region is the frame's cube |u| ≤ 2: [-4, 4]^3 for the default box.
-  EXPECT_EQ(sphere.algebraic()->lo, (std::array<double, 3>{-4, -4, -4}));
-  EXPECT_EQ(sphere.algebraic()->hi, (std::array<double, 3>{4, 4, 4}));
+  // The drawn region is the leaf box, [-2, 2]^3 for the default box.
+  EXPECT_EQ(sphere.algebraic()->lo, (std::array<double, 3>{-2, -2, -2}));
+  EXPECT_EQ(sphere.algebraic()->hi, (std::array<double, 3>{2, 2, 2}));
 
   SceneNode parametric;
   parametric.kind = NodeKind::parametric;

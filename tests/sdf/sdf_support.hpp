@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -60,6 +61,21 @@ inline double exact_estimate(const Polynomial& f, double x, double y, double z) 
   if (norm2 == Rational(0)) return std::nan("");
   const double magnitude = std::sqrt(to_mpq(value * value / norm2).get_d());
   return value < Rational(0) ? -magnitude : magnitude;
+}
+
+// The signed distance from (x, y, z) to the frame's box |u_i| <= 1 (iq's box: positive
+// outside, minus the distance to the nearest face inside), in double. Fast and safe
+// mode draw the solid F <= 0 clipped to it: fast returns max(F/|∇F|, this).
+inline double signed_box_distance(const SceneFrame& frame, double x, double y, double z) {
+  const double s = to_mpq(frame.scale).get_d();
+  const double p[3] = {x, y, z};
+  double outside = 0, largest = -1;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double q = std::fabs((p[i] - to_mpq(frame.centre[i]).get_d()) * s) - 1;
+    outside += std::max(q, 0.0) * std::max(q, 0.0);
+    largest = std::max(largest, q);
+  }
+  return (std::sqrt(outside) + std::min(largest, 0.0)) / s;
 }
 
 // Subnormals flushed to zero, as GPUs may (GLSL ES 3.00 §4.5.1 allows it).

@@ -51,10 +51,10 @@ RenderTarget RenderTarget::compile(const SceneNode& root, const SceneOptions& op
       surface.lo = {leaf.trim_lo().x, leaf.trim_lo().y, leaf.trim_lo().z};
       surface.hi = {leaf.trim_hi().x, leaf.trim_hi().y, leaf.trim_hi().z};
     } else {
-      static_assert(FastSdf::kFarField == SafeSdf::kFarField);
+      // The leaf is the solid F <= 0 clipped to its box |u_i| <= 1 (docs/sdf.md §3).
       for (std::size_t i = 0; i < 3; ++i) {
-        surface.lo[i] = surface.centre[i] - FastSdf::kFarField / surface.scale;
-        surface.hi[i] = surface.centre[i] + FastSdf::kFarField / surface.scale;
+        surface.lo[i] = surface.centre[i] - 1 / surface.scale;
+        surface.hi[i] = surface.centre[i] + 1 / surface.scale;
       }
     }
     target.algebraic_ = std::move(surface);

@@ -34,10 +34,10 @@ std::string FastSdf::to_glsl(const std::string& function) const {
     out += std::string("  float ") + names[i] + " = (p." + axes[i] + " - " + format_glsl_float(centre_float_[i]) +
            ") * " + s + ";\n";
   }
-  out += "  float du = max(abs(u) - 1.0, 0.0);\n";
-  out += "  float dv = max(abs(v) - 1.0, 0.0);\n";
-  out += "  float dw = max(abs(w) - 1.0, 0.0);\n";
-  out += "  float box = sqrt(du * du + dv * dv + dw * dw) * " + format_glsl_float(half_extent_float_) + ";\n";
+  out += "  float qu = abs(u) - 1.0, qv = abs(v) - 1.0, qw = abs(w) - 1.0;\n";
+  out += "  float du = max(qu, 0.0), dv = max(qv, 0.0), dw = max(qw, 0.0);\n";
+  out += "  float box = (sqrt(du * du + dv * dv + dw * dw) + min(max(qu, max(qv, qw)), 0.0)) * " +
+         format_glsl_float(half_extent_float_) + ";\n";
   out += "  if (max(abs(u), max(abs(v), abs(w))) > " + far + ") {\n";
   out += "    return box;\n";
   out += "  }\n";
@@ -45,7 +45,7 @@ std::string FastSdf::to_glsl(const std::string& function) const {
   out += "  float d = g / max(sqrt(gu * gu + gv * gv + gw * gw), " +
          format_glsl_float(static_cast<float>(kGradientFloor)) + ") * " + format_glsl_float(half_extent_float_) +
          ";\n";
-  out += "  return d >= 0.0 ? max(d, box) : min(d, -box);\n";
+  out += "  return max(d, box);\n";
   out += "}\n";
   return out;
 }

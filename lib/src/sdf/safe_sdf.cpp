@@ -54,6 +54,8 @@ SafeSdf::Constants<T> make_constants(const SceneFrame& frame, double box_half, s
   // L: sqrt(3)·L·h stays below 2^122 and L² below 2^120.
   k.box_clamp = round_down<T>(std::min(0x1p60, 0x1p120 / static_cast<double>(k.half_extent)));
   k.u_shrink = round_down<T>(1 - 4 * e);
+  k.u_grow = round_up<T>(1 + 4 * e);
+  k.box_half_inner = round_down<T>(box_half);
   k.u_error = round_up<T>(3 * e * margin);
   k.gamma_value = round_up<T>((gamma_of(e, m) * (1 + grow(e, m)) + 4 * e) * margin);
   k.gamma_gradient = round_up<T>((gamma_of(e, m) * (1 + grow(e, m + 2)) + 4 * e) * margin);
@@ -203,8 +205,12 @@ std::string SafeSdf::to_glsl(const std::string& function) const {
   out += "  }\n";
   out += "  float radius = safe - (abs_u + abs_v + abs_w) * " + f(k.u_error) + ";\n";
   out += "  if (!(radius > 0.0)) {\n    return box * " + f(k.half_extent) + " * " + f(k.out_shrink) + ";\n  }\n";
-  out += "  float d = max(box, radius) * " + f(k.half_extent) + " * " + f(k.out_shrink) + ";\n";
-  out += "  return g_value < 0.0 ? -d : d;\n";
+  out += "  if (g_value >= 0.0) {\n    return max(box, radius) * " + f(k.half_extent) + " * " + f(k.out_shrink) +
+         ";\n  }\n";
+  out += "  if (box > 0.0) {\n    return box * " + f(k.half_extent) + " * " + f(k.out_shrink) + ";\n  }\n";
+  out += "  float inner = max(" + f(k.box_half_inner) + " - max(abs_u, max(abs_v, abs_w)) * " + f(k.u_grow) +
+         ", 0.0);\n";
+  out += "  return -(min(radius, inner) * " + f(k.half_extent) + " * " + f(k.out_shrink) + ");\n";
   out += "}\n";
   return out;
 }

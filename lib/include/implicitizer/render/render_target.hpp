@@ -45,10 +45,10 @@ struct AlgebraicSurface {
   PolynomialProgram program;       ///< G and ∇G (run in double)
   /// G prepared for exact root isolation along rays (shared: one per target).
   std::shared_ptr<const RayPolynomialContext> ray_context;
-  /// The scene's value is G's estimate (or bound) only in [lo, hi], and positive
-  /// outside, so the zeros of the scene are the zeros of F there: the cube
-  /// |u_i| ≤ 2 of the leaf's frame (FastSdf/SafeSdf::kFarField; beyond it the value
-  /// is the distance to the box), or for a trimmed patch the trimming box.
+  /// The scene's surface lies in [lo, hi] and its value is positive outside: the
+  /// leaf's box |u_i| ≤ 1 (the solid F ≤ 0 clipped to it: F's zeros inside plus the
+  /// caps where the faces cut the solid; docs/sdf.md §3), or for a trimmed patch the
+  /// trimming box.
   std::array<double, 3> lo{}, hi{};
   bool trimmed = false;  ///< a trimmed parametric patch: an unsigned sheet, no inside
 };

@@ -16,13 +16,13 @@
 /// the floor instead: smaller in magnitude, never inf or NaN, but where the
 /// surface is singular (∇F = 0 on it) it is not a distance at all.
 ///
-/// The surface drawn is the part inside the box: outside it the magnitude is at least
-/// the distance to the box (h times the distance from u to the cube [-1, 1]^3), with
-/// F's sign, so no zero lies outside the box and sphere tracing never stops on the
-/// continuation of the surface there (before this, the estimate alone drew the surface
-/// out to twice the box and jumped where that region began). Far from the box (max
-/// |u_i| > kFarField) the value is the box distance alone: the polynomial is only
-/// evaluated where |u_i| <= 2, so |u|^18 <= 2.6e5 cannot overflow fp32.
+/// What is drawn is the solid F <= 0 clipped to the box: max(estimate, signed distance
+/// to the box), so its surface inside the box plus the caps where the box's faces cut
+/// the solid, and nothing outside the box (before this, the estimate alone drew the
+/// surface out to twice the box and jumped where that region began). Negative exactly
+/// where F < 0 inside the box. Far from the box (max |u_i| > kFarField) the value is
+/// the box distance alone: the polynomial is only evaluated where |u_i| <= 2, so
+/// |u|^18 <= 2.6e5 cannot overflow fp32.
 
 #include <algorithm>
 #include <array>
@@ -60,17 +60,19 @@ class FastSdf {
     const T v = (y - pick<T>(centre_[1], centre_float_[1])) * s;
     const T w = (z - pick<T>(centre_[2], centre_float_[2])) * s;
     const T one(1), zero(0), far(kFarField);
-    const T du = std::max(std::abs(u) - one, zero);
-    const T dv = std::max(std::abs(v) - one, zero);
-    const T dw = std::max(std::abs(w) - one, zero);
-    const T box = std::sqrt(du * du + dv * dv + dw * dw) * h;
+    // The signed distance to the box (iq's box: outside the Euclidean distance to it,
+    // inside minus the distance to the nearest face).
+    const T qu = std::abs(u) - one, qv = std::abs(v) - one, qw = std::abs(w) - one;
+    const T du = std::max(qu, zero), dv = std::max(qv, zero), dw = std::max(qw, zero);
+    const T box = (std::sqrt(du * du + dv * dv + dw * dw) + std::min(std::max(qu, std::max(qv, qw)), zero)) * h;
     if (std::max(std::abs(u), std::max(std::abs(v), std::abs(w))) > far) return box;
     const ValueAndGradient<T> r = program_.evaluate(u, v, w);
     const auto& g = r.gradient;
     const T length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
     const T d = r.value / std::max(length, T(kGradientFloor)) * h;
-    // The surface inside the box only: |value| >= the distance to the box, with F's sign.
-    return d >= zero ? std::max(d, box) : std::min(d, -box);
+    // The solid F <= 0 clipped to the box: its surface inside the box and the caps
+    // where the box's faces cut the solid; nothing outside the box.
+    return std::max(d, box);
   }
 
   /// `float FUNCTION(vec3 p) { ... }` with a comment line above it. Precondition:

@@ -116,6 +116,8 @@ class SafeSdf {
     T box_half = 1;             ///< b: the box is inside |u_i| <= b; rounded up
     T box_clamp = 1;            ///< L: box distances per axis are clamped to it (no overflow)
     T u_shrink = 1;             ///< 1 - 4ε: |u_true,i| >= |u_i|·u_shrink after rounding
+    T u_grow = 1;               ///< 1 + 4ε: |u_true,i| <= |u_i|·u_grow after rounding
+    T box_half_inner = 1;       ///< b rounded down: the distance to the faces from inside
     T u_error = 0;              ///< 3ε: |u - u_true| <= u_error·(|u|+|v|+|w|)
     T gamma_value = 0;          ///< Γ_A: |G(u) - g| <= Γ_A·Ĝ(a), with slack
     T gamma_gradient = 0;       ///< Γ_B: |∇G(u) - ∇g| <= Γ_B·ΣĜ_i(a), with slack
@@ -201,8 +203,12 @@ T SafeSdf::evaluate_with_chord_steps(T x, T y, T z, int chord_steps) const {
   }
   const T radius = safe - (abs_u + abs_v + abs_w) * k.u_error;
   if (!(radius > zero)) return box * k.half_extent * k.out_shrink;
-  const T d = std::max(box, radius) * k.half_extent * k.out_shrink;
-  return g.value < zero ? -d : d;
+  if (g.value >= zero) return std::max(box, radius) * k.half_extent * k.out_shrink;
+  // F < 0: the solid clipped to the box. Outside the box the value is the distance to
+  // it (positive); inside, minus the smaller of the radius and the distance to the faces.
+  if (box > zero) return box * k.half_extent * k.out_shrink;
+  const T inner = std::max(k.box_half_inner - std::max(abs_u, std::max(abs_v, abs_w)) * k.u_grow, zero);
+  return -(std::min(radius, inner) * k.half_extent * k.out_shrink);
 }
 
 }  // namespace implicitizer
