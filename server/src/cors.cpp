@@ -21,7 +21,12 @@ void CorsPolicy::apply(std::string_view origin, Response& response) const {
     response.set(http::field::access_control_allow_origin, origin);
     response.set(http::field::vary, "Origin");
   }
-  response.set(http::field::access_control_expose_headers, "Retry-After, X-Cache");
+  // The render statistics travel in headers beside the PNG body (handlers/render.cpp):
+  // a browser page on another origin reads them only if they are exposed.
+  response.set(http::field::access_control_expose_headers,
+               "Retry-After, X-Cache, X-Render-Width, X-Render-Height, X-Render-Method, X-Render-Mode, "
+               "X-Render-Precision, X-Render-Rays, X-Render-Hits, X-Render-Out-Of-Steps, "
+               "X-Render-Mean-Evaluations, X-Render-Max-Evaluations, X-Render-Elapsed-Ms");
 }
 
 Response CorsPolicy::answer_preflight(std::string_view origin, std::string_view methods) const {

@@ -418,6 +418,10 @@ def test_cors(s):
     status, headers, _ = s.request("POST", "/v1/groebner", b'{"polynomials": ["x"]}',
                                    {"Origin": "https://example.org", "Content-Type": "application/json"})
     check(status == 200 and headers.get("access-control-allow-origin") == "*", "CORS on POST")
+    # A page on another origin reads the render statistics from the headers.
+    exposed = [h.strip().lower() for h in headers.get("access-control-expose-headers", "").split(",")]
+    check("x-render-rays" in exposed and "x-render-mean-evaluations" in exposed and "x-cache" in exposed,
+          "CORS exposes the X-Render-* headers: %r" % exposed)
 
 
 def test_disconnect_cancels(s):
