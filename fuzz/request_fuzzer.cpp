@@ -62,5 +62,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const NoSingleEquation&) {
   } catch (const LimitExceeded&) {
   }
+  try {
+    // Decoding only: a render is seconds of marching, far beyond a fuzz iteration;
+    // its sizes and names are checked here, its scene by the sdf branch above.
+    const RenderRequest request = decode_render_request(body);
+    parse_field(request.implicit);
+    if (request.parametric) {
+      for (const std::string& coordinate : *request.parametric) parse_field(coordinate);
+    }
+  } catch (const InputError&) {
+  }
   return 0;
 }
