@@ -245,64 +245,44 @@ void run_or_skip(const Case& c) {
   EXPECT_GT(r.points, 300);
 }
 
-TEST(GlslExecution, SphereOnLlvmpipeAgreesWithTheFloatEvaluator) {
-  run_or_skip({"sphere", "x^2+y^2+z^2-1", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2}, {2, 2, 2}, {0, 0, 0}, 1});
-}
-
-TEST(GlslExecution, TorusOnLlvmpipeAgreesWithTheFloatEvaluator) {
-  // (x²+y²+z²+R²-r²)² - 4R²(x²+y²) with R = 2, r = 1.
-  run_or_skip({"torus",
-               "(x^2+y^2+z^2+3)^2-16*(x^2+y^2)",
-               {"-3", "-3", "-1", "3", "3", "1"},
-               {-3, -3, -1},
-               {3, 3, 1},
-               {0, 0, 0},
-               0});
-}
-
-TEST(GlslExecution, SteinerSurfaceOnLlvmpipeAgreesWithTheFloatEvaluator) {
-  run_or_skip({"steiner",
-               "x^2*y^2+y^2*z^2+z^2*x^2-x*y*z",
-               {"-2", "-2", "-2", "2", "2", "2"},
-               {-2, -2, -2},
-               {2, 2, 2},
-               {0, 0, 0},
-               0});
-}
-
-TEST(GlslExecution, SphereWithCoefficient1e30OnLlvmpipe) {
-  run_or_skip(
-      {"big", "10^30*(x^2+y^2+z^2-1)", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2}, {2, 2, 2}, {0, 0, 0}, 1});
-}
-
-TEST(GlslExecution, SphereOfRadius1e12FarFromTheOriginOnLlvmpipe) {
-  run_or_skip({"far",
-               "10^30*((x-5*10^12)^2+(y+3*10^12)^2+z^2-10^24)",
-               {"4e12", "-4e12", "-1e12", "6e12", "-2e12", "1e12"},
-               {4e12, -4e12, -1e12},
-               {6e12, -2e12, 1e12},
-               {5e12, -3e12, 0},
-               1e12});
-}
-
-TEST(GlslExecution, SphereOfRadius1e6WithCoefficient1e30MinusOnLlvmpipe) {
-  run_or_skip({"tiny",
-               "1e-30*((x-1e-3)^2+(y-2*1e-3)^2+(z+1e-3)^2-1e-12)",
-               {"0.999e-3", "1.999e-3", "-1.001e-3", "1.001e-3", "2.001e-3", "-0.999e-3"},
-               {0.999e-3, 1.999e-3, -1.001e-3},
-               {1.001e-3, 2.001e-3, -0.999e-3},
-               {1e-3, 2e-3, -1e-3},
-               1e-6});
-}
-
+// The surfaces both modes run: the unit sphere, the torus of radii 2 and 1
+// ((x²+y²+z²+R²−r²)² − 4R²(x²+y²)), Steiner's surface, and the extremes of
+// docs/sdf.md §4 (coefficients 1e30 and 1e-30, a radius of 1e12 far from the origin,
+// a radius of 1e-6).
 const Case kSphere = {
     "sphere", "x^2+y^2+z^2-1", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2}, {2, 2, 2}, {0, 0, 0}, 1};
+const Case kTorus = {"torus", "(x^2+y^2+z^2+3)^2-16*(x^2+y^2)", {"-3", "-3", "-1", "3", "3", "1"}, {-3, -3, -1},
+                     {3, 3, 1}, {0, 0, 0}, 0};
+const Case kSteiner = {"steiner", "x^2*y^2+y^2*z^2+z^2*x^2-x*y*z", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2},
+                       {2, 2, 2}, {0, 0, 0}, 0};
+const Case kBigSphere = {
+    "big", "10^30*(x^2+y^2+z^2-1)", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2}, {2, 2, 2}, {0, 0, 0}, 1};
+const Case kFarSphere = {"far",
+                         "10^30*((x-5*10^12)^2+(y+3*10^12)^2+z^2-10^24)",
+                         {"4e12", "-4e12", "-1e12", "6e12", "-2e12", "1e12"},
+                         {4e12, -4e12, -1e12},
+                         {6e12, -2e12, 1e12},
+                         {5e12, -3e12, 0},
+                         1e12};
+const Case kTinySphere = {"tiny",
+                          "1e-30*((x-1e-3)^2+(y-2*1e-3)^2+(z+1e-3)^2-1e-12)",
+                          {"0.999e-3", "1.999e-3", "-1.001e-3", "1.001e-3", "2.001e-3", "-0.999e-3"},
+                          {0.999e-3, 1.999e-3, -1.001e-3},
+                          {1.001e-3, 2.001e-3, -0.999e-3},
+                          {1e-3, 2e-3, -1e-3},
+                          1e-6};
+
+TEST(GlslExecution, SphereOnLlvmpipeAgreesWithTheFloatEvaluator) { run_or_skip(kSphere); }
+TEST(GlslExecution, TorusOnLlvmpipeAgreesWithTheFloatEvaluator) { run_or_skip(kTorus); }
+TEST(GlslExecution, SteinerSurfaceOnLlvmpipeAgreesWithTheFloatEvaluator) { run_or_skip(kSteiner); }
+TEST(GlslExecution, SphereWithCoefficient1e30OnLlvmpipe) { run_or_skip(kBigSphere); }
+TEST(GlslExecution, SphereOfRadius1e12FarFromTheOriginOnLlvmpipe) { run_or_skip(kFarSphere); }
+TEST(GlslExecution, SphereOfRadius1e6WithCoefficient1e30MinusOnLlvmpipe) { run_or_skip(kTinySphere); }
 
 TEST(GlslExecution, SafeSphereOnLlvmpipeNeverExceedsTheDistance) { run_safe_or_skip(kSphere); }
 
 TEST(GlslExecution, SafeTorusOnLlvmpipeNeverExceedsTheDistance) {
-  Case torus = {"torus", "(x^2+y^2+z^2+3)^2-16*(x^2+y^2)", {"-3", "-3", "-1", "3", "3", "1"}, {-3, -3, -1}, {3, 3, 1},
-                {0, 0, 0}, 0};
+  Case torus = kTorus;
   torus.distance = [](long double x, long double y, long double z) {
     const long double rho = std::sqrt(x * x + y * y) - 2;
     return std::fabs(std::sqrt(rho * rho + z * z) - 1);
@@ -310,35 +290,10 @@ TEST(GlslExecution, SafeTorusOnLlvmpipeNeverExceedsTheDistance) {
   run_safe_or_skip(torus);
 }
 
-TEST(GlslExecution, SafeSteinerSurfaceOnLlvmpipeKeepsExactSigns) {
-  run_safe_or_skip({"steiner", "x^2*y^2+y^2*z^2+z^2*x^2-x*y*z", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2},
-                    {2, 2, 2}, {0, 0, 0}, 0});
-}
-
-TEST(GlslExecution, SafeSphereWithCoefficient1e30OnLlvmpipe) {
-  run_safe_or_skip(
-      {"big", "10^30*(x^2+y^2+z^2-1)", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2}, {2, 2, 2}, {0, 0, 0}, 1});
-}
-
-TEST(GlslExecution, SafeSphereOfRadius1e12FarFromTheOriginOnLlvmpipe) {
-  run_safe_or_skip({"far",
-                    "10^30*((x-5*10^12)^2+(y+3*10^12)^2+z^2-10^24)",
-                    {"4e12", "-4e12", "-1e12", "6e12", "-2e12", "1e12"},
-                    {4e12, -4e12, -1e12},
-                    {6e12, -2e12, 1e12},
-                    {5e12, -3e12, 0},
-                    1e12});
-}
-
-TEST(GlslExecution, SafeSphereOfRadius1e6WithCoefficient1e30MinusOnLlvmpipe) {
-  run_safe_or_skip({"tiny",
-                    "1e-30*((x-1e-3)^2+(y-2*1e-3)^2+(z+1e-3)^2-1e-12)",
-                    {"0.999e-3", "1.999e-3", "-1.001e-3", "1.001e-3", "2.001e-3", "-0.999e-3"},
-                    {0.999e-3, 1.999e-3, -1.001e-3},
-                    {1.001e-3, 2.001e-3, -0.999e-3},
-                    {1e-3, 2e-3, -1e-3},
-                    1e-6});
-}
+TEST(GlslExecution, SafeSteinerSurfaceOnLlvmpipeKeepsExactSigns) { run_safe_or_skip(kSteiner); }
+TEST(GlslExecution, SafeSphereWithCoefficient1e30OnLlvmpipe) { run_safe_or_skip(kBigSphere); }
+TEST(GlslExecution, SafeSphereOfRadius1e12FarFromTheOriginOnLlvmpipe) { run_safe_or_skip(kFarSphere); }
+TEST(GlslExecution, SafeSphereOfRadius1e6WithCoefficient1e30MinusOnLlvmpipe) { run_safe_or_skip(kTinySphere); }
 
 }  // namespace
 }  // namespace implicitizer
