@@ -10,23 +10,14 @@
 #include "implicitizer/codec/implicitize_request.hpp"
 #include "implicitizer/codec/resultant_request.hpp"
 #include "implicitizer/codec/sdf_request.hpp"
+#include "codec/codec_support.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/polynomial/printer.hpp"
 
 namespace implicitizer {
 namespace {
 
-// The InputError `f` throws; fails the test when it throws nothing.
-template <class F>
-InputError input_error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return InputError("none", "none");
-}
+using testing::input_error_of;
 
 TEST(DecodeImplicitizeRequest, ReadsEveryField) {
   const ImplicitizeRequest r = decode_implicitize_request(

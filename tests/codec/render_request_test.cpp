@@ -9,22 +9,14 @@
 #include <string>
 
 #include "implicitizer/codec/json_codec.hpp"
+#include "codec/codec_support.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/render/png_codec.hpp"
 
 namespace implicitizer {
 namespace {
 
-template <class F>
-InputError input_error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return InputError("none", "none");
-}
+using testing::input_error_of;
 
 TEST(DecodeRenderRequest, ReadsEveryField) {
   const RenderRequest r = decode_render_request(
