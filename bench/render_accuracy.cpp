@@ -41,6 +41,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <cstdlib>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -74,13 +75,14 @@ constexpr const char* kThesisScenes[] = {"rounded_box", "tunnel", "five_spheres"
 
 constexpr const char* kUsage =
     "usage: implicitizer-render-accuracy [--surface NAME[,NAME...]] [--size WxH]\n"
-    "                                    [--surfaces FILE] [--scenes DIR]\n"
+    "                                    [--surfaces FILE] [--scenes DIR] [--omega W]\n"
     "\n"
     "Marches one primary ray per pixel of a WxH grid (the renderer's default camera)\n"
     "through every public surface of shared/bench and the second thesis's scenes\n"
     "(rounded_box, tunnel, five_spheres) with each method (sphere, enhanced, newton,\n"
     "forward_newton in modes fast and safe, and exact), and compares the hits with the\n"
     "reference (exact, or bisection where exact does not apply). Prints Markdown.\n"
+    "--omega W sets enhanced sphere tracing's relaxation (default the renderer's, 1.2).\n"
     "Defaults: --size 128x128 --surfaces " IMPLICITIZER_BENCH_DIR
     "/surfaces_public.json\n"
     "--scenes " IMPLICITIZER_SCENES_DIR "\n";
@@ -92,6 +94,7 @@ struct Config {
   std::size_t height = 128;
   std::string surfaces_file = std::string(IMPLICITIZER_BENCH_DIR) + "/surfaces_public.json";
   std::string scenes_dir = IMPLICITIZER_SCENES_DIR;
+  std::optional<double> omega;  ///< enhanced's ω; absent: MarchParams' default
 };
 
 /// A whole number in [1, 4096] from `text`; InputError `invalid_argument` naming `flag`.
@@ -135,6 +138,14 @@ Config parse_config(int argc, char** argv) {
       config.surfaces_file = take_value();
     } else if (flag == "--scenes") {
       config.scenes_dir = take_value();
+    } else if (flag == "--omega") {
+      const std::string text = take_value();
+      char* end = nullptr;
+      const double omega = std::strtod(text.c_str(), &end);
+      if (end != text.c_str() + text.size() || !(omega >= 1 && omega < 2)) {
+        throw InputError("invalid_argument", "--omega needs a number in [1, 2), not '" + text + "'").in_field(flag);
+      }
+      config.omega = omega;
     } else {
       throw InputError("invalid_argument", "unknown argument '" + flag + "'").in_field(flag);
     }
@@ -331,7 +342,8 @@ TargetResult measure_target(const Target& target, const Config& config) {
     out.size = std::max(out.size, to_double(target.box.hi[i]) - to_double(target.box.lo[i]));
   }
   const CameraSpec camera_spec = default_camera(safe);
-  const MarchParams params = default_render_march_params(safe, camera_spec);
+  MarchParams params = default_render_march_params(safe, camera_spec);
+  if (config.omega) params.omega = *config.omega;
   const Camera camera(camera_spec, config.width, config.height);
   std::vector<Ray> rays;
   for (std::size_t j = 0; j < config.height; ++j) {
