@@ -16,8 +16,9 @@
 /// safe value in double, the first sign change bisected to 1e-12 relative); on the
 /// algebraic targets the bisection reference is also run and compared with exact, as
 /// a check of the reference itself. Then every method (sphere, enhanced, newton,
-/// forward_newton) in both bound modes (fast, safe; float evaluation, as the GLSL), and
-/// exact, marches every ray on one thread; per run: mean and largest evaluations per
+/// forward_newton; and the two Newton methods unchecked, the second thesis' algorithms,
+/// MarchParams::check_newton_steps = false) in both bound modes (fast, safe; float
+/// evaluation, as the GLSL), and exact, marches every ray on one thread; per run: mean and largest evaluations per
 /// ray, the time of all rays (ms; only ratios mean anything on a shared machine),
 /// rays out of steps, hit/miss disagreements with the reference, and on rays both
 /// hit the squared depth error Δt² = (t − t_ref)² (mean and max), the largest |Δt|
@@ -80,7 +81,8 @@ constexpr const char* kUsage =
     "Marches one primary ray per pixel of a WxH grid (the renderer's default camera)\n"
     "through every public surface of shared/bench and the second thesis's scenes\n"
     "(rounded_box, tunnel, five_spheres) with each method (sphere, enhanced, newton,\n"
-    "forward_newton in modes fast and safe, and exact), and compares the hits with the\n"
+    "forward_newton, and both Newton methods unchecked, in modes fast and safe, and\n"
+    "exact), and compares the hits with the\n"
     "reference (exact, or bisection where exact does not apply). Prints Markdown.\n"
     "--omega W sets enhanced sphere tracing's relaxation (default the renderer's, 1.2).\n"
     "Defaults: --size 128x128 --surfaces " IMPLICITIZER_BENCH_DIR
@@ -423,6 +425,17 @@ TargetResult measure_target(const Target& target, const Config& config) {
        {MarchMethod::sphere, MarchMethod::enhanced, MarchMethod::newton, MarchMethod::forward_newton}) {
     for (const RenderTarget* t : {&fast, &safe}) {
       RunResult run = run_method(*t, rays, method, params, hits);
+      compare(reference, hits, out.jumps, out.size, run);
+      out.runs.push_back(run);
+    }
+  }
+  // The second thesis' Newton algorithms, without the step check: what the check buys.
+  MarchParams unchecked = params;
+  unchecked.check_newton_steps = false;
+  for (MarchMethod method : {MarchMethod::newton, MarchMethod::forward_newton}) {
+    for (const RenderTarget* t : {&fast, &safe}) {
+      RunResult run = run_method(*t, rays, method, unchecked, hits);
+      run.method += " (unchecked)";
       compare(reference, hits, out.jumps, out.size, run);
       out.runs.push_back(run);
     }

@@ -54,19 +54,15 @@ Agreement compare(const std::vector<MarchResult>& a, const std::vector<MarchResu
   return g;
 }
 
-// Every method, both modes, against exact, at the pixel centres of a 96×96 view.
-// Sphere and enhanced sphere tracing: masks agree (IoU ≥ 0.97) and 99% of the
-// common hits are within 1e-2·unit of exact's depth (they stop where f < ε =
-// 1e-4·unit, about ε/cos(angle) before the surface). Newton and forward Newton
-// marching are not safe: they agree on the sphere, but on the torus and Steiner's
-// surface they converge to a farther root on up to a third of the rays and stall
-// on most misses (the second thesis' findings); the floors below pin what was
-// measured (docs/render.md has the table), so that a change for the worse shows.
+// Every method, both modes, against exact, at the pixel centres of a 96×96 view:
+// masks agree (IoU ≥ 0.97) and 99% of the common hits are within 1e-2·unit of
+// exact's depth (the value-based methods stop where f < ε = 1e-4·unit, about
+// ε/cos(angle) before the surface), and few rays run out of steps. Newton and
+// forward Newton reach this because their steps are checked
+// (MarchParams::check_newton_steps); the unchecked algorithms of the second thesis
+// are measured in UncheckedNewtonFindsFartherRoots.
 TEST(MarchRay, EveryMethodAgreesWithExactOnSphereTorusSteiner) {
   constexpr std::size_t kSize = 96;
-  struct Floor {
-    double iou, within;
-  };
   for (const test::NamedSurface& surface : test::agreement_surfaces()) {
     for (SdfMode mode : {SdfMode::fast, SdfMode::safe}) {
       const RenderTarget target = implicit_target(surface.equation, surface.box, mode);
@@ -84,14 +80,41 @@ TEST(MarchRay, EveryMethodAgreesWithExactOnSphereTorusSteiner) {
             "evaluations %.1f\n",
             surface.name.c_str(), mode == SdfMode::safe ? "safe" : "fast", to_string(method), g.iou, g.both,
             g.depth_p99, g.depth_max, g.within, g.out_of_steps, g.mean_evaluations);
-        const bool safe_method = method == MarchMethod::sphere || method == MarchMethod::enhanced;
-        Floor floor{0.97, 0.99};
-        if (!safe_method && surface.name != "sphere") floor = {0.75, 0.6};
-        EXPECT_GE(g.iou, floor.iou) << surface.name << " " << to_string(method);
-        EXPECT_GE(g.within, floor.within) << surface.name << " " << to_string(method);
-        if (safe_method) {
-          EXPECT_LE(g.out_of_steps, kSize * kSize / 1000) << surface.name << " " << to_string(method);
-        }
+        EXPECT_GE(g.iou, 0.97) << surface.name << " " << to_string(method);
+        EXPECT_GE(g.within, 0.99) << surface.name << " " << to_string(method);
+        EXPECT_LE(g.out_of_steps, kSize * kSize / 1000) << surface.name << " " << to_string(method);
+      }
+    }
+  }
+}
+
+// The second thesis' Newton marching, unchecked: it agrees with exact on the
+// sphere, but on the torus and Steiner's surface it converges to a farther root on
+// many rays and stalls on misses. The floors pin what was measured (docs/render.md
+// §6), so that the benchmark's "unchecked" rows stay what they claim to be; and the
+// checked variant must beat it on these surfaces.
+TEST(MarchRay, UncheckedNewtonFindsFartherRoots) {
+  constexpr std::size_t kSize = 96;
+  for (const test::NamedSurface& surface : test::agreement_surfaces()) {
+    const RenderTarget target = implicit_target(surface.equation, surface.box, SdfMode::fast);
+    const CameraSpec camera = default_camera(target);
+    const MarchParams checked = default_render_march_params(target, camera);
+    MarchParams unchecked = checked;
+    unchecked.check_newton_steps = false;
+    const auto exact = test::march_pixels(target, camera, kSize, kSize, MarchMethod::exact, checked);
+    for (MarchMethod method : {MarchMethod::newton, MarchMethod::forward_newton}) {
+      const Agreement thesis =
+          compare(test::march_pixels(target, camera, kSize, kSize, method, unchecked), exact, target.length_unit());
+      const Agreement ours =
+          compare(test::march_pixels(target, camera, kSize, kSize, method, checked), exact, target.length_unit());
+      std::printf("%-8s unchecked %-14s IoU %.4f within %.4f out of steps %5zu evaluations %.1f\n",
+                  surface.name.c_str(), to_string(method), thesis.iou, thesis.within, thesis.out_of_steps,
+                  thesis.mean_evaluations);
+      EXPECT_GE(thesis.iou, 0.75) << surface.name << " " << to_string(method);
+      EXPECT_GE(thesis.within, 0.6) << surface.name << " " << to_string(method);
+      EXPECT_LT(ours.mean_evaluations, thesis.mean_evaluations) << surface.name << " " << to_string(method);
+      if (surface.name != "sphere") {
+        EXPECT_LT(thesis.within, ours.within) << surface.name << " " << to_string(method);
       }
     }
   }

@@ -90,8 +90,25 @@ void march_enhanced(const RayFunction& f, const MarchParams& params, MarchResult
 // Newton's method on f(t) (001, Algorithm 5), and on g(t) = f(t)·(t − T)/t with
 // T = t_max (001, Algorithm 6: the factor adds a root at T, so that a ray with no
 // root drifts forward instead of stalling). Derivatives by a forward difference.
-// Guards: a slope below min_slope, a non-finite step, or a step to behind t_min
-// (the seed's "dist/ddist > t") take the sphere step |f| instead.
+//
+// Checked steps (params.check_newton_steps, the default). The slope is the secant
+// through the previous point (a forward difference only at the first point): one
+// evaluation a step, as sphere tracing. A Newton step shorter than the sphere step
+// |f| (a backward step, the seed's "behind the origin", a flat slope, a non-finite
+// step) is replaced by the sphere step. A longer one is shortened to what the
+// overlap check of enhanced sphere tracing can accept if f keeps its slope σ,
+// margin·2f/(1 − σ) (a step that lands on the surface from farther than f can never
+// pass it: the check needs |f(t_new)| + f(t) ≥ t_new − t), and at most cap·f; where
+// it lands the check is made, and if it fails the ray goes back and takes the
+// sphere step. With a bound every accepted segment is covered by balls free of the
+// surface, so checked Newton is as safe as sphere tracing, and it never stalls:
+// every step advances by at least |f|. It is then a slope-adaptive over-relaxation
+// (Bálint and Valasek 2018 take ω from the same secant); Newton's own step shows
+// where the estimate is steeper than a distance (fast mode) and when the landing is
+// inside (below). Unchecked (the second thesis' algorithm: forward differences, any
+// Newton step) Newton converges to some root, often not the first, and stalls at
+// local minima of |f| on rays that miss (docs/render.md §6 measures both).
+//
 // A Newton step that lands inside the solid (f < −ε after f ≥ ε at the previous
 // point) has bracketed a root: it is refined in the bracket by regula falsi with
 // the Illinois modification (each evaluation keeps a sign change, so it converges
@@ -122,35 +139,62 @@ void refine_bracket(const RayFunction& f, const MarchParams& params, double a, d
   hit_at(r, a);  // the outer end: f(a) > 0, within ε of the root (or out of steps)
 }
 
+// The Newton target from t (value f(t), slope f'(t)), +inf where the step is not
+// defined or not trusted (a slope below the floor, t = 0 for forward Newton).
+double newton_target(double t, double value, double slope, bool forward, const MarchParams& params) {
+  if (forward) {
+    // g = f·(t − T)/t, g' = f'·(t − T)/t + f·T/t² (the thesis prints this last term
+    // garbled). At t = 0 g is undefined.
+    if (!(t > 0)) return HUGE_VAL;
+    const double far = params.t_max;
+    const double factor = (t - far) / t;
+    const double g = value * factor;
+    const double g_slope = slope * factor + value * far / (t * t);
+    return std::abs(g_slope) >= params.min_slope ? t - g / g_slope : HUGE_VAL;
+  }
+  return std::abs(slope) >= params.min_slope ? t - value / slope : HUGE_VAL;
+}
+
 void march_newton(const RayFunction& f, const MarchParams& params, bool forward, MarchResult& r) {
   double t = params.t_min;
   const double delta = params.derivative_step;
-  const double far = params.t_max;
   double previous_t = t, previous_value = 0;
+  bool unchecked_landing = false;  // t was reached by a Newton step longer than |f|
+  bool has_previous = false;
   for (; r.steps < params.max_steps; ++r.steps) {
     const double value = f(t);
+    if (unchecked_landing && !(std::abs(value) + previous_value >= t - previous_t)) {
+      t = previous_t + previous_value;  // the step may have crossed the surface: step back
+      unchecked_landing = false;
+      continue;
+    }
+    unchecked_landing = false;
     if (value < params.epsilon) {
       if (r.steps == 0 || value > -params.epsilon) return hit_at(r, t);
       return refine_bracket(f, params, previous_t, previous_value, t, value, r);
     }
     if (!std::isfinite(value)) return;
+    double slope;
+    if (params.check_newton_steps && has_previous) {
+      slope = (value - previous_value) / (t - previous_t);
+    } else {
+      slope = (f(t + delta) - value) / delta;
+    }
+    has_previous = true;
     previous_t = t;
     previous_value = value;
-    const double slope = (f(t + delta) - value) / delta;
-    double next = HUGE_VAL;
-    if (forward) {
-      // g = f·(t − T)/t, g' = f'·(t − T)/t + f·T/t² (the thesis prints this last term
-      // garbled). At t = 0 g is undefined: take the sphere step.
-      if (t > 0) {
-        const double factor = (t - far) / t;
-        const double g = value * factor;
-        const double g_slope = slope * factor + value * far / (t * t);
-        if (std::abs(g_slope) >= params.min_slope) next = t - g / g_slope;
-      }
-    } else if (std::abs(slope) >= params.min_slope) {
-      next = t - value / slope;
+    double next = newton_target(t, value, slope, forward, params);
+    const double sphere_next = t + value;
+    if (params.check_newton_steps) {
+      // The longest step the check can accept if f keeps the slope σ it has here:
+      // f(t + s) = f + σ·s ≥ s − f ⇔ s ≤ 2f/(1 − σ).
+      if (slope < 1) next = std::min(next, t + params.newton_overlap_margin * 2 * value / (1 - slope));
+      next = std::min(next, t + params.newton_step_cap * value);
+      unchecked_landing = std::isfinite(next) && next > sphere_next && next <= params.t_max;
+      t = unchecked_landing ? next : sphere_next;
+    } else {
+      t = std::isfinite(next) && next >= params.t_min ? next : sphere_next;
     }
-    t = std::isfinite(next) && next >= params.t_min ? next : t + std::abs(value);
     if (t > params.t_max) return;
   }
   r.out_of_steps = true;
