@@ -1,16 +1,19 @@
 """Starts build/bin/implicitizer-server on an ephemeral loopback port and talks HTTP to
-it with the standard library only (http.client, socket). Shared by server_test.py and
-reproduce_test.py."""
+it with the standard library only (http.client, socket), and reads back the PNGs it
+renders. Shared by server_test.py, reproduce_test.py and
+tests/clients/python_client_test.py."""
 
 import http.client
 import json
 import os
 import signal
 import socket
+import struct
 import subprocess
 import tempfile
 import threading
 import time
+import zlib
 
 
 class Server:
@@ -94,3 +97,56 @@ class Server:
             if line.startswith(name + " ") or line.startswith(name + "{"):
                 total = (total or 0) + float(line.rsplit(" ", 1)[1])
         return total
+
+
+def decode_png(data):
+    """(width, height, rows) of an 8-bit RGB, non-interlaced PNG, each row `3 * width`
+    bytes, after checking the signature, every chunk's CRC and undoing the filters."""
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        raise AssertionError("not a PNG signature: %r" % data[:8])
+    pos, chunks = 8, []
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        payload = data[pos + 8:pos + 8 + length]
+        (crc,) = struct.unpack(">I", data[pos + 8 + length:pos + 12 + length])
+        if crc != zlib.crc32(kind + payload):
+            raise AssertionError("bad CRC in chunk %r" % kind)
+        chunks.append((kind, payload))
+        pos += 12 + length
+    if chunks[0][0] != b"IHDR" or chunks[-1][0] != b"IEND":
+        raise AssertionError("chunks %r" % [k for k, _ in chunks])
+    width, height, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", chunks[0][1])
+    if (depth, colour, interlace) != (8, 2, 0):
+        raise AssertionError("not 8-bit RGB non-interlaced: %r" % ((depth, colour, interlace),))
+    raw = zlib.decompress(b"".join(p for k, p in chunks if k == b"IDAT"))
+    stride = 3 * width
+    if len(raw) != height * (stride + 1):
+        raise AssertionError("IDAT holds %d bytes for %dx%d" % (len(raw), width, height))
+    rows, previous = [], bytearray(stride)
+    for y in range(height):
+        kind = raw[y * (stride + 1)]
+        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - 3] if i >= 3 else 0
+            b = previous[i]
+            c = previous[i - 3] if i >= 3 else 0
+            if kind == 1:
+                line[i] = (line[i] + a) & 255
+            elif kind == 2:
+                line[i] = (line[i] + b) & 255
+            elif kind == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+            elif kind != 0:
+                raise AssertionError("unknown filter %d in row %d" % (kind, y))
+        rows.append(bytes(line))
+        previous = line
+    return width, height, rows
+
+
+def pixel(rows, x, y):
+    """The (r, g, b) bytes of pixel (x, y) of decode_png's rows."""
+    return rows[y][3 * x:3 * x + 3]

@@ -14,7 +14,7 @@ import traceback
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from server_harness import Server  # noqa: E402
+from server_harness import Server, decode_png, pixel  # noqa: E402
 
 BIN = sys.argv[1]
 SPHERE = {"x": "2*s/(1+s^2+t^2)", "y": "2*t/(1+s^2+t^2)", "z": "(1-s^2-t^2)/(1+s^2+t^2)"}
@@ -144,43 +144,6 @@ def test_sdf(s):
               "sdf %r: %s %r" % (request, status, body))
 
 
-def decode_png(data):
-    """(width, height, rows of (r, g, b) tuples) of an 8-bit RGB PNG, by zlib and the
-    five PNG row filters: the test reads back what the server wrote, with no image library."""
-    import struct
-    import zlib
-    check(data[:8] == b"\x89PNG\r\n\x1a\n", "PNG signature")
-    pos, idat, width, height = 8, b"", 0, 0
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        chunk = data[pos + 8:pos + 8 + length]
-        pos += 12 + length
-        if kind == b"IHDR":
-            width, height, depth, colour = struct.unpack(">IIBB", chunk[:10])
-            check(depth == 8 and colour == 2, "PNG is 8-bit RGB")
-        elif kind == b"IDAT":
-            idat += chunk
-    raw, stride, rows, previous = zlib.decompress(idat), 3 * width, [], bytearray(3 * width)
-    for y in range(height):
-        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - 3] if i >= 3 else 0
-            b, c = previous[i], previous[i - 3] if i >= 3 else 0
-            if kind == 1:
-                line[i] = (line[i] + a) & 255
-            elif kind == 2:
-                line[i] = (line[i] + b) & 255
-            elif kind == 3:
-                line[i] = (line[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append([tuple(line[3 * x:3 * x + 3]) for x in range(width)])
-        previous = line
-    return width, height, rows
-
-
 def test_render(s):
     import base64
     status, headers, data = s.request("POST", "/v1/render", {"implicit": "x^2+y^2+z^2-1", "width": 40, "height": 30,
@@ -188,10 +151,11 @@ def test_render(s):
     check(status == 200 and headers.get("content-type") == "image/png", "render: %s %r" % (status, headers))
     width, height, rows = decode_png(data)
     check((width, height) == (40, 30), "render size %dx%d" % (width, height))
-    check(rows[0][0] == (242, 242, 242), "render background is the seed's grey 0.95: %r" % (rows[0][0],))
-    check(rows[15][20] != (242, 242, 242), "render: the sphere is in the middle")
+    grey = bytes((242, 242, 242))
+    check(pixel(rows, 0, 0) == grey, "render background is the seed's grey 0.95: %r" % (pixel(rows, 0, 0),))
+    check(pixel(rows, 20, 15) != grey, "render: the sphere is in the middle")
     rays, hits = int(headers.get("x-render-rays", -1)), int(headers.get("x-render-hits", -1))
-    background = sum(1 for row in rows for p in row if p == (242, 242, 242))
+    background = sum(1 for y in range(height) for x in range(width) if pixel(rows, x, y) == grey)
     check(rays == 1200 and background == rays - hits and headers.get("x-render-method") == "sphere"
           and float(headers.get("x-render-mean-evaluations", 0)) > 1, "render headers: %r" % headers)
     # The JSON variant: the same image in base64, with the statistics.

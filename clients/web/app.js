@@ -1,0 +1,665 @@
+// The page: inputs → POST /v1/implicitize → the equation and its scripts → POST
+// /v1/sdf → the live preview (preview.js). Errors are shown beside the input they
+// concern, with the server's position marked; long requests show their elapsed time
+// and can be cancelled (the fetch is aborted, and the server cancels the computation
+// of a client that disconnects).
+import { ApiError, apiHost, checkHealth, implicitize, renderPng, sdf } from './api.js';
+import { fillExamplesMenu, loadExamples } from './examples.js';
+import { defaultCamera, Preview, ShaderError } from './preview.js';
+
+const $ = (id) => document.getElementById(id);
+const DEFAULT_BOX = [-2, -2, -2, 2, 2, 2];
+const INITIAL_EXAMPLE = 'torus_R2_r1';
+const FIELDS = ['x', 'y', 'z', 'equation', 'box'];
+
+const ui = {
+  tabs: { parametric: $('tab-parametric'), implicit: $('tab-implicit') },
+  forms: { parametric: $('form-parametric'), implicit: $('form-implicit') },
+  examples: $('examples'),
+  inputs: { x: $('x'), y: $('y'), z: $('z'), equation: $('equation'), box: $('box') },
+  method: $('method'),
+  timeout: $('timeout'),
+  progress: $('progress'),
+  progressText: $('progress-text'),
+  progressTime: $('progress-time'),
+  cancel: $('cancel'),
+  submitButtons: [$('implicitize'), $('draw')],
+  generalError: $('general-error'),
+  result: $('result'),
+  resultHeading: $('result-heading'),
+  implicit: $('implicit'),
+  degree: $('degree'),
+  resultMethod: $('result-method'),
+  resultTime: $('result-time'),
+  verified: $('verified'),
+  resultStats: $('result-stats'),
+  reproduce: $('reproduce'),
+  singular: $('reproduce-singular'),
+  macaulay2: $('reproduce-macaulay2'),
+  canvas: $('preview'),
+  overlay: $('preview-overlay'),
+  noWebgl: $('webgl-unavailable'),
+  cpuImage: $('cpu-fallback'),
+  stats: $('preview-stats'),
+  aa: $('aa'),
+  resetView: $('reset-view'),
+  copyGlsl: $('copy-glsl'),
+  glsl: $('glsl'),
+  glslSummary: $('glsl-summary'),
+  toast: $('toast'),
+  serverStatus: $('server-status'),
+};
+
+const state = {
+  mode: 'parametric',
+  examples: [],
+  busy: null, // the running request: {controller, started, timer, setLabel}
+  drawn: null, // {equation, box, name}: what the preview shows
+  glsl: '', // the last GLSL POST /v1/sdf returned
+};
+
+// ---------------------------------------------------------------- formatting
+
+function formatMs(ms) {
+  if (!Number.isFinite(ms)) return '—';
+  if (ms < 1) return `${ms.toFixed(2)} ms`;
+  if (ms < 1000) return `${ms.toFixed(ms < 10 ? 1 : 0)} ms`;
+  return `${(ms / 1000).toFixed(ms < 10000 ? 2 : 1)} s`;
+}
+
+function shortRenderer(name) {
+  // "ANGLE (Google, Vulkan 1.3.0 (SwiftShader Device (Subzero) (0x0000C0DE)), SwiftShader driver)"
+  // -> "Vulkan 1.3.0 (SwiftShader Device (Subzero))"
+  if (!name) return '';
+  const m = /^ANGLE \((?:[^,]*), (.*), [^,]*\)$/.exec(name);
+  return (m ? m[1] : name).replace(/ \(0x[0-9a-fA-F]+\)/g, '').replace(/\s+Direct3D.*$/, '');
+}
+
+/// Parses "x0, y0, z0, x1, y1, z1" (commas or spaces). Throws an ApiError-like object
+/// with the position of the first bad number.
+function parseBox(text) {
+  const parts = [];
+  const re = /[^\s,]+/g;
+  let m;
+  while ((m = re.exec(text))) parts.push({ value: m[0], position: m.index });
+  const fail = (message, position) => {
+    throw new ApiError({ status: 0, code: 'invalid_box', message, position, field: 'box' });
+  };
+  if (parts.length !== 6) fail(`the box needs 6 numbers (x0, y0, z0, x1, y1, z1), not ${parts.length}`, parts[6]?.position ?? text.length);
+  const numbers = parts.map((p) => {
+    const v = Number(p.value);
+    if (!Number.isFinite(v)) fail(`'${p.value}' is not a number`, p.position);
+    return v;
+  });
+  for (let i = 0; i < 3; ++i) {
+    if (!(numbers[i] < numbers[i + 3])) fail(`${'xyz'[i]}0 must be less than ${'xyz'[i]}1`, parts[i + 3].position);
+  }
+  return numbers;
+}
+
+// ---------------------------------------------------------------- errors
+
+function clearErrors() {
+  for (const name of FIELDS) {
+    const input = ui.inputs[name];
+    input.removeAttribute('aria-invalid');
+    const box = $(`${name}-error`);
+    box.hidden = true;
+    box.replaceChildren();
+  }
+  ui.generalError.hidden = true;
+  ui.generalError.replaceChildren();
+}
+
+// A two-line excerpt of `text` with the character at `position` marked and a caret
+// under it, like a compiler's message; long texts are cut around the position.
+function caretExcerpt(text, position) {
+  const width = 56;
+  let start = Math.max(0, position - Math.floor(width / 2));
+  const end = Math.min(text.length, start + width);
+  start = Math.max(0, Math.min(start, end - width));
+  const prefix = start > 0 ? '…' : '';
+  const suffix = end < text.length ? '…' : '';
+  const before = text.slice(start, position);
+  const at = text.slice(position, position + 1);
+  const after = text.slice(position + 1, end);
+  const pre = document.createElement('pre');
+  pre.className = 'caret';
+  pre.setAttribute('aria-hidden', 'true'); // the message says where, for screen readers
+  const mark = document.createElement('mark');
+  mark.textContent = at || ' ';
+  const pointer = document.createElement('span');
+  pointer.className = 'pointer';
+  pointer.textContent = '^';
+  pre.append(prefix + before, mark, after + suffix, '\n', ' '.repeat(prefix.length + before.length), pointer);
+  return pre;
+}
+
+function errorText(error) {
+  const fragment = document.createDocumentFragment();
+  const code = document.createElement('span');
+  code.className = 'code-name';
+  code.textContent = error.code;
+  fragment.append(code, ': ', error.message);
+  if (error.code === 'overloaded' && error.retryAfter) fragment.append(` (retry in ${error.retryAfter} s)`);
+  if (Array.isArray(error.details?.generators) && error.details.generators.length) {
+    const pre = document.createElement('pre');
+    pre.className = 'caret';
+    pre.textContent = 'generators of the elimination ideal:\n' + error.details.generators.join('\n');
+    fragment.append(pre);
+  }
+  return fragment;
+}
+
+/// Shows `error` (ApiError) beside the input it concerns: `fieldMap` maps the
+/// server's field names to this page's inputs. The input is marked invalid, the
+/// offending characters are selected in it, and an excerpt with a caret is shown.
+function showError(error, fieldMap) {
+  const name = error.field !== null ? fieldMap[error.field] : undefined;
+  if (!name) {
+    ui.generalError.replaceChildren(errorText(error));
+    if (error.field) ui.generalError.append(` (field ${error.field})`);
+    ui.generalError.hidden = false;
+    return;
+  }
+  const input = ui.inputs[name];
+  const box = $(`${name}-error`);
+  input.setAttribute('aria-invalid', 'true');
+  box.replaceChildren(errorText(error));
+  const text = input.value;
+  if (error.position !== null && error.position >= 0 && error.position <= text.length) {
+    const where = document.createElement('span');
+    where.className = 'sr-only';
+    where.textContent = ` (at character ${error.position + 1})`;
+    box.append(where, caretExcerpt(text, error.position));
+    box.dataset.position = String(error.position);
+    input.focus();
+    input.setSelectionRange(error.position, Math.min(text.length, error.position + 1));
+  } else {
+    delete box.dataset.position;
+    input.focus();
+  }
+  box.hidden = false;
+}
+
+// ---------------------------------------------------------------- busy state
+
+function setProgress(kind, text) {
+  ui.progress.dataset.state = kind;
+  ui.progressText.textContent = text;
+  if (kind !== 'busy') ui.progressTime.textContent = '';
+}
+
+// The label is announced to screen readers (aria-live); the ticking time is not.
+function startBusy(label) {
+  if (state.busy) {
+    clearInterval(state.busy.timer);
+    state.busy.controller.abort(); // a new request replaces the running one
+  }
+  const controller = new AbortController();
+  const busy = { controller, started: performance.now(), timer: 0 };
+  const tick = () => (ui.progressTime.textContent = `${((performance.now() - busy.started) / 1000).toFixed(1)} s`);
+  busy.timer = setInterval(tick, 100);
+  busy.setLabel = (text) => setProgress('busy', text);
+  state.busy = busy;
+  setProgress('busy', label);
+  tick();
+  ui.cancel.hidden = false;
+  ui.cancel.disabled = false;
+  for (const b of ui.submitButtons) b.disabled = true;
+  ui.progress.setAttribute('aria-busy', 'true');
+  return busy;
+}
+
+function endBusy(busy, kind, text) {
+  if (state.busy !== busy) return false;
+  clearInterval(busy.timer);
+  state.busy = null;
+  ui.cancel.hidden = true;
+  for (const b of ui.submitButtons) b.disabled = false;
+  ui.progress.removeAttribute('aria-busy');
+  setProgress(kind, text);
+  return true;
+}
+
+ui.cancel.addEventListener('click', () => state.busy && state.busy.controller.abort());
+document.addEventListener('keydown', (e) => {
+  if (e.key === 'Escape' && state.busy) state.busy.controller.abort();
+});
+
+// ---------------------------------------------------------------- results
+
+// One line on how the answer was computed (the response's stats).
+function describeStats(result) {
+  const st = result.stats || {};
+  const parts = [];
+  if (result.method === 'groebner' && st.basis_size) {
+    const skipped = (st.product_criterion || 0) + (st.chain_criterion || 0);
+    parts.push(`Gröbner basis of ${st.basis_size} polynomials`, `${st.pairs} S-pairs (${skipped} skipped by the criteria)`, `${st.reductions} reductions`);
+  } else if (result.method === 'resultant' && st.resultant) {
+    const r = st.resultant;
+    parts.push(`${r.formulation[0].toUpperCase()}${r.formulation.slice(1)} resultant`, `${r.matrix_size}×${r.matrix_size} matrix`, `${r.primes} prime${r.primes === 1 ? '' : 's'}`);
+  }
+  if (Number.isFinite(st.verify_ms)) parts.push(`verified in ${formatMs(st.verify_ms)}`);
+  return parts.join(' · ');
+}
+
+function showParametricResult(result, roundTripMs) {
+  const curve = Array.isArray(result.variables) && result.variables.length === 2;
+  ui.resultHeading.textContent = curve ? 'Implicit curve' : 'Implicit equation';
+  ui.implicit.textContent = `${result.implicit} = 0`;
+  ui.implicit.dataset.equation = result.implicit;
+  ui.degree.textContent = String(result.degree);
+  ui.resultMethod.textContent = result.method === 'groebner' ? 'Gröbner' : result.method;
+  ui.resultMethod.title = result.stats?.route ? `route: ${result.stats.route}` : '';
+  ui.resultTime.textContent = formatMs(result.elapsed_ms);
+  ui.resultTime.title = `${formatMs(result.elapsed_ms)} on the server, ${formatMs(roundTripMs)} round trip`;
+  ui.verified.textContent = result.verified ? '✓ yes' : '✗ no';
+  ui.verified.className = result.verified ? 'yes' : 'no';
+  ui.verified.title = 'the parametrization substituted into the equation in exact arithmetic gives 0';
+  ui.resultStats.textContent = describeStats(result);
+  ui.resultStats.title = result.stats?.route ? `route: ${result.stats.route}` : '';
+  ui.singular.textContent = result.reproduce?.singular || '';
+  ui.macaulay2.textContent = result.reproduce?.macaulay2 || '';
+  ui.reproduce.hidden = !result.reproduce;
+  ui.result.hidden = false;
+}
+
+function showImplicitResult(equation, answer, roundTripMs) {
+  ui.resultHeading.textContent = 'Implicit equation (given)';
+  ui.implicit.textContent = `${equation} = 0`;
+  ui.implicit.dataset.equation = equation;
+  ui.degree.textContent = String(answer.degree);
+  ui.resultMethod.textContent = 'given';
+  ui.resultMethod.title = '';
+  ui.resultTime.textContent = formatMs(roundTripMs);
+  ui.resultTime.title = 'POST /v1/sdf and the compilation of the shader';
+  ui.verified.textContent = '—';
+  ui.verified.className = '';
+  ui.verified.title = 'nothing to verify: the equation was typed';
+  ui.resultStats.textContent = `Distance function ${answer.function} in ${answer.mode} mode.`;
+  ui.resultStats.title = '';
+  ui.reproduce.hidden = true;
+  ui.result.hidden = false;
+}
+
+function showGlsl(answer) {
+  state.glsl = answer.glsl;
+  ui.glsl.textContent = answer.glsl;
+  const lines = answer.glsl.split('\n').length;
+  ui.glslSummary.textContent = `${answer.function}(vec3 p) · ${answer.mode} mode · ${lines} lines`;
+  ui.copyGlsl.disabled = false;
+}
+
+// ---------------------------------------------------------------- preview
+
+const preview = Preview.create(ui.canvas, { onStatus: previewStatus });
+ui.canvas.dataset.webgl2 = preview ? 'yes' : 'no';
+if (!preview) {
+  ui.canvas.hidden = true;
+  ui.noWebgl.hidden = false;
+  ui.resetView.disabled = true;
+  document.querySelector('.stage-hint').hidden = true;
+}
+
+function previewStatus(s) {
+  if (s.state === 'compiling') ui.stats.textContent = 'Compiling the shader…';
+  else if (s.state === 'rendering') ui.stats.textContent = `Rendering… ${Math.round((s.progress || 0) * 100)}%`;
+  else if (s.state === 'done') {
+    const gpu = shortRenderer(s.renderer);
+    ui.stats.textContent = `${s.width}×${s.height} px · AA ${s.aa}×${s.aa} · ${currentMode()} mode · ${formatMs(s.ms)}${gpu ? ' · ' + gpu : ''}`;
+    ui.stats.title = s.renderer || '';
+  } else if (s.state === 'error' && s.message) ui.stats.textContent = s.message;
+}
+
+function currentMode() {
+  return document.querySelector('input[name="mode"]:checked').value;
+}
+
+function showPreviewError(message, log) {
+  ui.overlay.hidden = false;
+  ui.overlay.className = 'stage-overlay error';
+  ui.overlay.textContent = log ? `${message}\n${log}` : message;
+}
+
+function hidePreviewError() {
+  ui.overlay.hidden = true;
+  ui.overlay.textContent = '';
+}
+
+/// The CPU renderer's image of the same surface, for browsers without WebGL2.
+async function drawOnServer(drawn, mode, signal) {
+  // As large as the space under the message allows (at most 800×600).
+  const rect = ui.noWebgl.getBoundingClientRect();
+  const top = ui.noWebgl.querySelector('p').getBoundingClientRect().bottom - rect.top + 14;
+  const width = Math.max(64, Math.min(800, Math.round(rect.width - 54)));
+  const height = Math.max(64, Math.min(600, Math.round(rect.height - top - 24)));
+  const camera = defaultCamera(drawn.box);
+  const blob = await renderPng(
+    { implicit: drawn.equation, box: drawn.box, mode, width, height, aa: Number(ui.aa.value), eye: camera.eye, target: camera.target, timeout_ms: 60000 },
+    { signal },
+  );
+  if (ui.cpuImage.src) URL.revokeObjectURL(ui.cpuImage.src);
+  ui.cpuImage.src = URL.createObjectURL(blob);
+  ui.cpuImage.hidden = false;
+}
+
+/// POST /v1/sdf for `equation` in the current mode and box, then compiles it into the
+/// preview. `busy` is the current request (its label is updated). Throws ApiError,
+/// ShaderError or AbortError.
+async function drawSurface(equation, box, name, busy) {
+  busy.setLabel('Building the distance function…');
+  const mode = currentMode();
+  const answer = await sdf({ implicit: equation, mode, box, name, timeoutMs: Number(ui.timeout.value) }, { signal: busy.controller.signal });
+  showGlsl(answer);
+  hidePreviewError();
+  const drawn = { equation, box, name, mode };
+  if (!preview) {
+    busy.setLabel('Rendering on the server…');
+    await drawOnServer(drawn, mode, busy.controller.signal);
+    state.drawn = drawn;
+    return answer;
+  }
+  // Cancel during the compilation keeps the previous surface on the canvas.
+  busy.setLabel('Compiling the shader…');
+  const signal = busy.controller.signal;
+  const onAbort = () => preview.cancelPending();
+  signal.addEventListener('abort', onAbort, { once: true });
+  try {
+    await preview.setSurface({ glsl: answer.glsl, functionName: answer.function, box: answer.box || box, uniforms: answer.uniforms || [] });
+  } finally {
+    signal.removeEventListener('abort', onAbort);
+  }
+  // What the canvas draws from now on (its first image is drawn after this).
+  state.drawn = drawn;
+  ui.canvas.dataset.mode = mode;
+  ui.canvas.dataset.equation = equation;
+  return answer;
+}
+
+function surfaceName() {
+  const selected = state.examples.find((e) => e.name === ui.examples.value);
+  return selected ? selected.name : 'surface';
+}
+
+// Runs one request: busy state, cancellation, error display.
+async function run(label, body) {
+  clearErrors();
+  const busy = startBusy(label);
+  try {
+    const summary = await body(busy);
+    endBusy(busy, 'done', summary);
+    // The mode was switched while this ran, after its distance function was asked for.
+    if (state.drawn && state.drawn.mode !== currentMode()) redrawInMode();
+  } catch (error) {
+    if (error.name === 'AbortError') {
+      if (state.busy === busy) endBusy(busy, 'idle', `Cancelled after ${((performance.now() - busy.started) / 1000).toFixed(1)} s.`);
+      return;
+    }
+    if (!endBusy(busy, 'error', 'Failed.')) return;
+    if (error instanceof ApiError) {
+      showError(error, error.fieldMap || {});
+      setProgress('error', error.status ? `Error ${error.status} · ${error.code}` : `Error · ${error.code}`);
+      if (error.status === 0 && error.code === 'network_error') updateServerStatus(false);
+    } else if (error instanceof ShaderError) {
+      showPreviewError('The GPU refused the shader:', error.log);
+      setProgress('error', 'The shader did not compile.');
+    } else {
+      ui.generalError.textContent = String(error.message || error);
+      ui.generalError.hidden = false;
+      console.error(error);
+    }
+  }
+}
+
+const PARAMETRIC_FIELDS = { x: 'x', y: 'y', z: 'z', box: 'box' };
+
+function submitParametric() {
+  // Sent as typed (the parser skips spaces), so that error positions index the input.
+  const x = ui.inputs.x.value;
+  const y = ui.inputs.y.value;
+  const z = ui.inputs.z.value.trim() ? ui.inputs.z.value : '';
+  const name = surfaceName();
+  return run('Implicitizing…', async (busy) => {
+    let box;
+    try {
+      box = parseBox(ui.inputs.box.value);
+    } catch (e) {
+      e.fieldMap = PARAMETRIC_FIELDS;
+      throw e;
+    }
+    const started = performance.now();
+    let result;
+    try {
+      result = await implicitize({ x, y, z, method: ui.method.value, timeoutMs: Number(ui.timeout.value) }, { signal: busy.controller.signal });
+    } catch (e) {
+      if (e instanceof ApiError) e.fieldMap = PARAMETRIC_FIELDS;
+      throw e;
+    }
+    showParametricResult(result, performance.now() - started);
+    try {
+      await drawSurface(result.implicit, box, name, busy);
+    } catch (e) {
+      // The equation is fine; its distance function or shader is not.
+      if (e instanceof ApiError) e.fieldMap = { box: 'box' };
+      throw e;
+    }
+    return `Degree ${result.degree} by ${result.method === 'groebner' ? 'Gröbner' : result.method} in ${formatMs(result.elapsed_ms)}${result.verified ? ', verified' : ''}.`;
+  });
+}
+
+function submitImplicit() {
+  const equation = ui.inputs.equation.value;
+  const name = surfaceName();
+  return run('Building the distance function…', async (busy) => {
+    let box;
+    try {
+      box = parseBox(ui.inputs.box.value);
+    } catch (e) {
+      e.fieldMap = { box: 'box' };
+      throw e;
+    }
+    const started = performance.now();
+    let answer;
+    try {
+      answer = await drawSurface(equation, box, name, busy);
+    } catch (e) {
+      if (e instanceof ApiError) e.fieldMap = { implicit: 'equation', box: 'box' };
+      throw e;
+    }
+    showImplicitResult(equation, answer, performance.now() - started);
+    return `Distance function of degree ${answer.degree} (${answer.mode} mode).`;
+  });
+}
+
+// Mode fast/safe: the same surface, the other distance function. A running request
+// is not interrupted: it asks for the new mode, or run() redraws when it is done.
+function redrawInMode() {
+  if (!state.drawn || state.busy) return;
+  const { equation, box, name } = state.drawn;
+  run('Building the distance function…', async (busy) => {
+    try {
+      await drawSurface(equation, box, name, busy);
+    } catch (e) {
+      if (e instanceof ApiError) e.fieldMap = state.mode === 'implicit' ? { implicit: 'equation', box: 'box' } : { box: 'box' };
+      throw e;
+    }
+    return `Distance function in ${currentMode()} mode.`;
+  });
+}
+
+// ---------------------------------------------------------------- tabs, examples
+
+function setMode(mode, { focus = false } = {}) {
+  state.mode = mode;
+  for (const [name, tab] of Object.entries(ui.tabs)) {
+    const selected = name === mode;
+    tab.setAttribute('aria-selected', String(selected));
+    tab.tabIndex = selected ? 0 : -1;
+    ui.forms[name].hidden = !selected;
+  }
+  $('implicitize').hidden = mode !== 'parametric';
+  $('draw').hidden = mode !== 'implicit';
+  if (mode === 'implicit' && !ui.inputs.equation.value && ui.implicit.dataset.equation) {
+    ui.inputs.equation.value = ui.implicit.dataset.equation;
+  }
+  if (focus) ui.tabs[mode].focus();
+  document.body.dataset.mode = mode;
+}
+
+for (const [name, tab] of Object.entries(ui.tabs)) {
+  tab.addEventListener('click', () => setMode(name));
+  tab.addEventListener('keydown', (e) => {
+    if (e.key === 'ArrowRight' || e.key === 'ArrowLeft') {
+      e.preventDefault();
+      setMode(name === 'parametric' ? 'implicit' : 'parametric', { focus: true });
+    }
+  });
+}
+
+function applyExample(name, { submit = true } = {}) {
+  const example = state.examples.find((e) => e.name === name);
+  if (!example) return;
+  ui.examples.value = name;
+  ui.inputs.x.value = example.x;
+  ui.inputs.y.value = example.y;
+  ui.inputs.z.value = example.z;
+  if (example.implicit) ui.inputs.equation.value = example.implicit;
+  ui.inputs.box.value = (example.box || DEFAULT_BOX).join(', ');
+  if (!submit) return;
+  if (state.mode === 'implicit' && example.implicit) submitImplicit();
+  else submitParametric();
+}
+
+ui.examples.addEventListener('change', () => applyExample(ui.examples.value));
+// Editing an expression makes it a surface of one's own: the menu says so.
+for (const name of ['x', 'y', 'z', 'equation']) {
+  ui.inputs[name].addEventListener('input', () => {
+    ui.examples.value = '';
+    if (ui.inputs[name].getAttribute('aria-invalid')) {
+      ui.inputs[name].removeAttribute('aria-invalid');
+      $(`${name}-error`).hidden = true;
+    }
+  });
+}
+ui.inputs.box.addEventListener('input', () => {
+  ui.inputs.box.removeAttribute('aria-invalid');
+  $('box-error').hidden = true;
+});
+// Enter in the box field submits the visible form.
+ui.inputs.box.addEventListener('keydown', (e) => {
+  if (e.key === 'Enter') {
+    e.preventDefault();
+    if (!state.busy) ui.forms[state.mode].requestSubmit();
+  }
+});
+
+ui.forms.parametric.addEventListener('submit', (e) => {
+  e.preventDefault();
+  submitParametric();
+});
+ui.forms.implicit.addEventListener('submit', (e) => {
+  e.preventDefault();
+  submitImplicit();
+});
+
+for (const radio of document.querySelectorAll('input[name="mode"]')) radio.addEventListener('change', redrawInMode);
+ui.aa.addEventListener('change', () => {
+  if (preview) preview.setAntialiasing(Number(ui.aa.value));
+  else if (state.drawn) run('Rendering on the server…', async (busy) => (await drawOnServer(state.drawn, currentMode(), busy.controller.signal), 'Rendered on the server.'));
+});
+ui.resetView.addEventListener('click', () => preview && preview.resetView());
+
+// ---------------------------------------------------------------- copying
+
+function toast(text) {
+  ui.toast.textContent = text;
+  ui.toast.hidden = false;
+  clearTimeout(toast.timer);
+  toast.timer = setTimeout(() => (ui.toast.hidden = true), 1800);
+}
+
+/// Puts `text` on the clipboard: the asynchronous clipboard API where the page is a
+/// secure context (loopback counts), else a hidden textarea and execCommand('copy').
+async function copyText(text) {
+  try {
+    if (navigator.clipboard && window.isSecureContext) {
+      await navigator.clipboard.writeText(text);
+      return true;
+    }
+  } catch {
+    // fall through to the fallback
+  }
+  const area = document.createElement('textarea');
+  area.value = text;
+  area.setAttribute('readonly', '');
+  area.style.position = 'fixed';
+  area.style.opacity = '0';
+  document.body.append(area);
+  area.select();
+  let ok = false;
+  try {
+    ok = document.execCommand('copy');
+  } catch {
+    ok = false;
+  }
+  area.remove();
+  return ok;
+}
+
+ui.copyGlsl.addEventListener('click', async () => {
+  if (!state.glsl) return;
+  if (await copyText(state.glsl)) {
+    toast('GLSL copied to the clipboard');
+    return;
+  }
+  // No clipboard: show the text selected, ready for Ctrl+C.
+  $('glsl-details').open = true;
+  window.getSelection().selectAllChildren(ui.glsl);
+  toast('Could not copy: the GLSL is selected below');
+});
+$('copy-implicit').addEventListener('click', async () => {
+  const text = ui.implicit.dataset.equation || '';
+  toast((await copyText(text)) ? 'Equation copied' : 'Could not copy');
+});
+for (const button of document.querySelectorAll('[data-copy]')) {
+  button.addEventListener('click', async () => {
+    const text = $(button.dataset.copy).textContent;
+    toast((await copyText(text)) ? 'Script copied' : 'Could not copy');
+  });
+}
+
+// ---------------------------------------------------------------- start
+
+function updateServerStatus(ok) {
+  ui.serverStatus.dataset.state = ok ? 'ok' : 'down';
+  ui.serverStatus.querySelector('.text').textContent = ok ? `server ok · ${apiHost}` : `server unreachable · ${apiHost}`;
+}
+
+// Settings from the address: ?example=NAME&mode=fast|safe&aa=N&input=implicit.
+function readAddress() {
+  const params = new URLSearchParams(window.location.search);
+  const aa = params.get('aa');
+  if (aa && [...ui.aa.options].some((o) => o.value === aa)) ui.aa.value = aa;
+  const mode = params.get('mode');
+  if (mode === 'fast' || mode === 'safe') $(`mode-${mode}`).checked = true;
+  if (preview) preview.setAntialiasing(Number(ui.aa.value));
+  return { example: params.get('example') || INITIAL_EXAMPLE, input: params.get('input') === 'implicit' ? 'implicit' : 'parametric' };
+}
+
+async function start() {
+  const address = readAddress();
+  setMode(address.input);
+  checkHealth().then(updateServerStatus);
+  try {
+    state.examples = await loadExamples();
+    fillExamplesMenu(ui.examples, state.examples);
+  } catch (error) {
+    ui.generalError.textContent = `Could not load the examples: ${error.message}`;
+    ui.generalError.hidden = false;
+  }
+  if (state.examples.some((e) => e.name === address.example)) applyExample(address.example);
+  document.body.dataset.ready = 'true';
+}
+
+start();

@@ -1,0 +1,94 @@
+#!/usr/bin/env node
+// Writes clients/web/examples.json, the web client's examples menu, from the public
+// benchmark surfaces (../shared/bench/surfaces_public.json) and Singular's implicit
+// equation of each (../shared/bench/expected/NAME.txt, shown when the page is in
+// "implicit equation" mode).
+//
+//   node scripts/make-web-examples.mjs            # (re)write clients/web/examples.json
+//   node scripts/make-web-examples.mjs --check    # exit 1 if it is out of date
+//
+// Why a committed file: the server serves clients/web as it is in the source tree
+// (`make run` passes --static clients/web) and nothing outside it, and shared/ is not
+// part of this repository; a copy made at build time would have to be written into
+// the source tree anyway. So the file is generated once, committed, and the browser
+// test (tests/web) runs `buildExamples()` to check that it still matches shared/.
+//
+// Each surface gets the box the benchmarks and the gallery frame it in
+// (tests/sdf/reference_distance.hpp `public_surface_box`, scripts/render-examples.sh),
+// so the preview shows it as docs/render.md §12 does.
+import fs from 'node:fs';
+import path from 'node:path';
+import process from 'node:process';
+import { fileURLToPath } from 'node:url';
+
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+export const examplesPath = path.join(root, 'clients', 'web', 'examples.json');
+export const defaultSharedDir = path.join(root, '..', 'shared');
+
+// The box [x0, y0, z0, x1, y1, z1] of a public surface (public_surface_box).
+function boxOf(name) {
+  const cube = (cx, half) => [cx - half, -half, -half, cx + half, half, half];
+  if (name === 'torus_R2_r1' || name === 'enneper') return cube(0, 4);
+  if (name === 'steiner_roman') return cube(0, 1);
+  if (name === 'biquadratic_patch') return cube(2, 4);
+  return cube(0, 2);
+}
+
+// The menu's names of the public surfaces; a surface not listed gets its name with
+// spaces ("new_surface" -> "New surface").
+const LABELS = {
+  plane: 'Plane',
+  elliptic_paraboloid: 'Elliptic paraboloid',
+  hyperbolic_paraboloid: 'Hyperbolic paraboloid',
+  unit_sphere: 'Unit sphere',
+  whitney_umbrella: "Whitney's umbrella",
+  cylinder_rational: 'Cylinder (rational)',
+  cone_rational: 'Cone (rational)',
+  torus_R2_r1: 'Torus, R = 2, r = 1',
+  steiner_roman: "Steiner's Roman surface",
+  enneper: "Enneper's surface",
+  bicubic_graph: 'Bicubic graph',
+  biquadratic_patch: 'Biquadratic patch',
+};
+function labelOf(name) {
+  if (LABELS[name]) return LABELS[name];
+  const words = name.split('_');
+  return [words[0].charAt(0).toUpperCase() + words[0].slice(1), ...words.slice(1)].join(' ');
+}
+
+/// The text examples.json must hold for the shared/ folder at `sharedDir`.
+export function buildExamples(sharedDir = defaultSharedDir) {
+  const bench = path.join(sharedDir, 'bench');
+  const surfaces = JSON.parse(fs.readFileSync(path.join(bench, 'surfaces_public.json'), 'utf8'));
+  const examples = surfaces.map((s) => {
+    const expected = path.join(bench, 'expected', `${s.name}.txt`);
+    const example = { name: s.name, label: labelOf(s.name), x: s.x, y: s.y, z: s.z, degree: s.degree, box: boxOf(s.name) };
+    if (fs.existsSync(expected)) example.implicit = fs.readFileSync(expected, 'utf8').trim();
+    return example;
+  });
+  const document = {
+    source: 'shared/bench/surfaces_public.json and shared/bench/expected/*.txt; regenerate with node scripts/make-web-examples.mjs',
+    examples,
+  };
+  // One example per line: readable diffs when shared/ changes.
+  const lines = examples.map((e) => '    ' + JSON.stringify(e));
+  return `{\n  "source": ${JSON.stringify(document.source)},\n  "examples": [\n${lines.join(',\n')}\n  ]\n}\n`;
+}
+
+if (process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
+  const check = process.argv.includes('--check');
+  const text = buildExamples();
+  const current = fs.existsSync(examplesPath) ? fs.readFileSync(examplesPath, 'utf8') : '';
+  if (check) {
+    if (current !== text) {
+      console.error(`${path.relative(root, examplesPath)} is out of date: run node scripts/make-web-examples.mjs`);
+      process.exit(1);
+    }
+    console.log(`${path.relative(root, examplesPath)} is up to date`);
+  } else if (current === text) {
+    console.log(`unchanged ${path.relative(root, examplesPath)}`);
+  } else {
+    fs.writeFileSync(examplesPath, text);
+    console.log(`wrote ${path.relative(root, examplesPath)}`);
+  }
+}

@@ -1,0 +1,470 @@
+// Browser tests of the web client (clients/web): the real implicitizer-server on a
+// loopback port serving clients/web, and Debian's chromium, headless, driven by
+// playwright-core, with WebGL2 on SwiftShader (a software GPU). Nothing is mocked.
+//
+//   node --test tests/web/                    (from the repository root)
+//   IMPLICITIZER_SERVER=build/bin/implicitizer-server CHROMIUM=/usr/bin/chromium node --test tests/web/
+//
+// What it checks: the sphere and Steiner's surface typed and picked from the menu
+// give their equations, degree, method, time, verified flag and scripts; the preview
+// shows exactly the GLSL POST /v1/sdf returns, and its silhouette matches the CPU
+// renderer's image of the same view (POST /v1/render, IoU >= 0.9) in fast and safe
+// mode; Copy GLSL puts that text on the clipboard; errors appear beside the right
+// input with the server's position selected and marked; Cancel aborts a long
+// Gröbner computation and the server counts it cancelled; without WebGL2 the page
+// says so and shows the server's CPU image; examples.json matches shared/bench.
+// It saves a 1280×800 screenshot, docs/images/web_client.png for the README when that
+// is missing or UPDATE_SCREENSHOT=1 (else in the temporary folder). The server and
+// browser setup is harness.mjs, shared with embed_example.test.mjs.
+import { after, before, test } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { buildExamples, examplesPath } from '../../scripts/make-web-examples.mjs';
+import {
+  decodePng,
+  launchChromium,
+  root,
+  sharedDir,
+  silhouette,
+  startServer,
+  stopServer,
+  watchErrors,
+} from './harness.mjs';
+
+// The README's picture is (re)written when it is missing or UPDATE_SCREENSHOT=1;
+// otherwise the screenshot goes to the temporary folder, so that a test run leaves
+// the work tree as it was (the picture shows times and a port that change).
+const docsScreenshot = path.join(root, 'docs', 'images', 'web_client.png');
+const screenshotPath =
+  process.env.UPDATE_SCREENSHOT === '1' || !fs.existsSync(docsScreenshot)
+    ? docsScreenshot
+    : path.join(os.tmpdir(), 'implicitizer-web_client.png');
+
+const SPHERE = { x: '2*s/(1+s^2+t^2)', y: '2*t/(1+s^2+t^2)', z: '(1-s^2-t^2)/(1+s^2+t^2)' };
+const IOU_MIN = 0.9;
+
+let server; // {process, url, logPath}
+let browser;
+let context;
+let page;
+const pageErrors = [];
+
+// ------------------------------------------------------------------ helpers
+
+async function post(pathname, body) {
+  const response = await fetch(server.url + pathname, { method: 'POST', body: JSON.stringify(body) });
+  return { status: response.status, headers: response.headers, body: Buffer.from(await response.arrayBuffer()) };
+}
+
+async function postJson(pathname, body) {
+  const r = await post(pathname, body);
+  return { status: r.status, json: JSON.parse(r.body.toString('utf8')) };
+}
+
+async function metric(name) {
+  const text = await (await fetch(server.url + '/metrics')).text();
+  const line = text.split('\n').find((l) => l.startsWith(name + ' ') || l.startsWith(name + '{'));
+  return line ? Number(line.trim().split(/\s+/).pop()) : 0;
+}
+
+function iou(a, b) {
+  let both = 0, either = 0;
+  for (let i = 0; i < a.length; ++i) {
+    both += a[i] & b[i];
+    either += a[i] | b[i];
+  }
+  return either ? both / either : 1;
+}
+
+/// The preview canvas's pixels (rows top to bottom, RGB) and the view it shows.
+async function readCanvas() {
+  const result = await page.evaluate(() => {
+    const canvas = document.getElementById('preview');
+    const gl = canvas.getContext('webgl2');
+    const { width, height } = canvas;
+    const rgba = new Uint8Array(width * height * 4);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
+    let binary = '';
+    for (let i = 0; i < rgba.length; i += 0x8000) binary += String.fromCharCode.apply(null, rgba.subarray(i, i + 0x8000));
+    return { width, height, rgba: btoa(binary), dataset: { ...canvas.dataset } };
+  });
+  assert.equal(result.dataset.state, 'done', 'the image was complete when read');
+  const { width, height } = result;
+  const rgba = Buffer.from(result.rgba, 'base64');
+  const rgb = new Uint8Array(width * height * 3);
+  for (let y = 0; y < height; ++y) {
+    const src = (height - 1 - y) * width * 4; // readPixels' rows start at the bottom
+    for (let x = 0; x < width; ++x) for (let k = 0; k < 3; ++k) rgb[(y * width + x) * 3 + k] = rgba[src + 4 * x + k];
+  }
+  return { width, height, rgb, view: result.dataset };
+}
+
+/// Waits until the preview has finished an image of `equation` in `mode` newer than
+/// frame `after`.
+async function waitForImage(equation, mode, afterFrame, timeout = 120000) {
+  await page.waitForFunction(
+    ([eq, m, f]) => {
+      const d = document.getElementById('preview').dataset;
+      return d.state === 'done' && d.equation === eq && d.mode === m && Number(d.frame || 0) > f;
+    },
+    [equation, mode, afterFrame],
+    { timeout, polling: 100 },
+  );
+}
+
+async function currentFrame() {
+  return page.evaluate(() => Number(document.getElementById('preview').dataset.frame || 0));
+}
+
+/// Compares the canvas with POST /v1/render of the same view; returns the IoU.
+async function compareWithCpuRenderer(equation, mode, t) {
+  const canvas = await readCanvas();
+  const v = canvas.view;
+  assert.equal(v.function !== undefined, true, 'the canvas says which function it draws');
+  const request = {
+    implicit: equation,
+    mode,
+    box: JSON.parse(v.box),
+    eye: JSON.parse(v.eye),
+    target: JSON.parse(v.target),
+    width: Number(v.width),
+    height: Number(v.height),
+    aa: Number(v.aa),
+    method: 'sphere',
+    timeout_ms: 60000,
+  };
+  assert.equal(request.width, canvas.width);
+  assert.equal(request.height, canvas.height);
+  const started = Date.now();
+  const r = await post('/v1/render', request);
+  assert.equal(r.status, 200, r.body.toString('utf8').slice(0, 300));
+  assert.equal(r.headers.get('content-type'), 'image/png');
+  const png = decodePng(r.body);
+  assert.equal(png.width, canvas.width);
+  assert.equal(png.height, canvas.height);
+  const gpuMask = silhouette(canvas.rgb, canvas.width, canvas.height);
+  const cpuMask = silhouette(png.rgb, png.width, png.height);
+  const gpuCount = gpuMask.reduce((s, v) => s + v, 0);
+  const cpuCount = cpuMask.reduce((s, v) => s + v, 0);
+  const score = iou(gpuMask, cpuMask);
+  // The shading too: the mean and the 99th percentile of |GPU − CPU| over the channels
+  // of the pixels both call surface.
+  const diffs = [];
+  for (let p = 0; p < gpuMask.length; ++p) {
+    if (!(gpuMask[p] && cpuMask[p])) continue;
+    for (let k = 0; k < 3; ++k) diffs.push(Math.abs(canvas.rgb[3 * p + k] - png.rgb[3 * p + k]));
+  }
+  diffs.sort((a, b) => a - b);
+  const meanDiff = diffs.reduce((s, v) => s + v, 0) / Math.max(1, diffs.length);
+  const p99 = diffs.length ? diffs[Math.floor(0.99 * (diffs.length - 1))] : 0;
+  const line = `${equation} (${mode}, ${canvas.width}x${canvas.height}, AA ${request.aa}): IoU ${score.toFixed(4)}, ` +
+    `surface pixels GPU ${gpuCount} / CPU ${cpuCount}, colour |GPU - CPU| mean ${meanDiff.toFixed(2)} p99 ${p99} ` +
+    `(of 255), CPU render ${Date.now() - started} ms`;
+  t.diagnostic(line);
+  // "Shows the surface": a real share of the image, and the centre row is not blank.
+  assert.ok(gpuCount > 0.02 * canvas.width * canvas.height, `the canvas shows the surface (${gpuCount} pixels)`);
+  assert.ok(score >= IOU_MIN, `IoU ${score} >= ${IOU_MIN}`);
+  // Same shading model: a loose bound (the normals differ, docs: clients/web/README.md).
+  assert.ok(meanDiff < 2, `mean colour difference ${meanDiff} < 2 of 255`);
+  return score;
+}
+
+async function setMode(mode) {
+  await page.click(`label:has(#mode-${mode})`);
+  assert.equal(await page.isChecked(`#mode-${mode}`), true);
+}
+
+// ------------------------------------------------------------------ setup
+
+before(async () => {
+  server = await startServer();
+  browser = await launchChromium();
+  context = await browser.newContext({ viewport: { width: 1280, height: 800 }, deviceScaleFactor: 1, hasTouch: true });
+  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: server.url });
+  page = await context.newPage();
+  watchErrors(page, pageErrors);
+});
+
+after(async () => {
+  if (browser) await browser.close();
+  await stopServer(server);
+});
+
+// ------------------------------------------------------------------ tests
+
+test('examples.json matches shared/bench (scripts/make-web-examples.mjs)', (t) => {
+  if (!fs.existsSync(path.join(sharedDir, 'bench', 'surfaces_public.json'))) {
+    t.skip(`no ${sharedDir}/bench`);
+    return;
+  }
+  assert.equal(fs.readFileSync(examplesPath, 'utf8'), buildExamples(sharedDir), 'run node scripts/make-web-examples.mjs');
+});
+
+test('the page loads with WebGL2, lists every public surface and draws the first example', async () => {
+  // One sample per pixel for the comparisons (SwiftShader is a CPU); the screenshot
+  // switches to 2×2 below.
+  await page.goto(server.url + '/?aa=1');
+  await page.waitForSelector('body[data-ready="true"]');
+  assert.equal(await page.getAttribute('#preview', 'data-webgl2'), 'yes', 'WebGL2 is available to the page');
+  assert.equal(await page.inputValue('#aa'), '1');
+  const names = await page.$$eval('#examples option', (options) => options.map((o) => o.value).filter(Boolean));
+  const expected = JSON.parse(fs.readFileSync(examplesPath, 'utf8')).examples.map((e) => e.name);
+  assert.deepEqual(names, expected);
+  await page.waitForSelector('#server-status[data-state="ok"]');
+  // The initial example (the torus) is implicitized and drawn.
+  await page.waitForFunction(() => Number(document.getElementById('preview').dataset.frame || 0) >= 1, null, { timeout: 120000 });
+  assert.match(await page.textContent('#implicit'), /^x\^4\+2\*x\^2\*y\^2/);
+});
+
+test('the sphere: equation, facts, scripts, the GLSL of /v1/sdf, and the silhouette of the CPU renderer', async (t) => {
+  await page.click('#tab-parametric');
+  const frame = await currentFrame();
+  await page.fill('#x', SPHERE.x);
+  await page.fill('#y', SPHERE.y);
+  await page.fill('#z', SPHERE.z);
+  await page.fill('#box', '-2, -2, -2, 2, 2, 2');
+  await setMode('fast'); // already fast: no new request
+  await page.press('#z', 'Enter'); // Enter submits
+  await page.waitForFunction(() => document.getElementById('implicit').dataset.equation === 'x^2+y^2+z^2-1', null, { timeout: 30000 });
+  assert.equal(await page.textContent('#implicit'), 'x^2+y^2+z^2-1 = 0');
+  assert.equal(await page.textContent('#degree'), '2');
+  assert.match(await page.textContent('#result-method'), /^(Gröbner|resultant)$/);
+  assert.match(await page.textContent('#result-time'), /^\d+(\.\d+)? (ms|s)$/);
+  assert.equal(await page.textContent('#verified'), '✓ yes');
+  assert.match(await page.textContent('#reproduce-singular'), /eliminate/);
+  assert.match(await page.textContent('#reproduce-macaulay2'), /eliminate/);
+  // The page shows, and the shader contains, exactly what POST /v1/sdf answers.
+  const reference = await postJson('/v1/sdf', { implicit: 'x^2+y^2+z^2-1', mode: 'fast', box: [-2, -2, -2, 2, 2, 2], name: 'surface' });
+  assert.equal(reference.status, 200);
+  await page.waitForFunction((g) => document.getElementById('glsl').textContent === g, reference.json.glsl, { timeout: 30000 });
+  await waitForImage('x^2+y^2+z^2-1', 'fast', frame);
+  assert.equal(await page.getAttribute('#preview', 'data-function'), 'surface_sdf');
+  await compareWithCpuRenderer('x^2+y^2+z^2-1', 'fast', t);
+  // Copy GLSL puts that text on the clipboard.
+  await page.click('#copy-glsl');
+  await page.waitForSelector('#toast:not([hidden])');
+  assert.equal(await page.evaluate(() => navigator.clipboard.readText()), reference.json.glsl);
+});
+
+test("Steiner's surface from the examples menu, in safe mode: equation and silhouette", async (t) => {
+  const steiner = JSON.parse(fs.readFileSync(examplesPath, 'utf8')).examples.find((e) => e.name === 'steiner_roman');
+  await setMode('safe'); // redraws the sphere in safe mode
+  let frame = await currentFrame();
+  await waitForImage('x^2+y^2+z^2-1', 'safe', frame - 1);
+  frame = await currentFrame();
+  await page.selectOption('#examples', 'steiner_roman');
+  assert.equal(await page.inputValue('#x'), steiner.x);
+  assert.equal(await page.inputValue('#box'), '-1, -1, -1, 1, 1, 1');
+  const equation = 'x^2*y^2+x^2*z^2+y^2*z^2-x*y*z';
+  await page.waitForFunction((eq) => document.getElementById('implicit').dataset.equation === eq, equation, { timeout: 30000 });
+  assert.equal(await page.textContent('#degree'), '4');
+  assert.equal(await page.textContent('#verified'), '✓ yes');
+  await waitForImage(equation, 'safe', frame);
+  assert.equal(await page.getAttribute('#preview', 'data-function'), 'steiner_roman_sdf');
+  assert.match(await page.textContent('#glsl-summary'), /steiner_roman_sdf\(vec3 p\) · safe mode/);
+  await compareWithCpuRenderer(equation, 'safe', t);
+  // The picture for the README: Steiner's surface at 2×2 samples per pixel, with its
+  // equation and scripts. The AA switch redraws without a new request.
+  frame = await currentFrame();
+  await page.selectOption('#aa', '2');
+  await waitForImage(equation, 'safe', frame);
+  assert.equal(await page.getAttribute('#preview', 'data-aa'), '2');
+  // Closer, with the keyboard (+ on the focused canvas).
+  frame = await currentFrame();
+  await page.focus('#preview');
+  for (let i = 0; i < 4; ++i) await page.keyboard.press('+');
+  await waitForImage(equation, 'safe', frame);
+  await page.mouse.move(0, 0);
+  fs.mkdirSync(path.dirname(screenshotPath), { recursive: true });
+  await page.screenshot({ path: screenshotPath });
+  t.diagnostic(`screenshot: ${screenshotPath}`);
+  // Back to the default view and one sample per pixel for the next tests.
+  frame = await currentFrame();
+  await page.selectOption('#aa', '1');
+  await page.click('#reset-view');
+  await waitForImage(equation, 'safe', frame);
+});
+
+test('orbit and zoom by mouse and touch change the eye around the target', async () => {
+  const dist = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+  const view = async () => ({
+    eye: JSON.parse(await page.getAttribute('#preview', 'data-eye')),
+    target: JSON.parse(await page.getAttribute('#preview', 'data-target')),
+  });
+  const settled = async (f) =>
+    page.waitForFunction((n) => {
+      const d = document.getElementById('preview').dataset;
+      return d.state === 'done' && Number(d.frame) > n;
+    }, f, { timeout: 120000 });
+  const start = await view();
+  const box = await page.locator('#preview').boundingBox();
+  const cx = box.x + box.width / 2, cy = box.y + box.height / 2;
+
+  // Mouse: drag to orbit, wheel down to move away.
+  let frame = await currentFrame();
+  await page.mouse.move(cx, cy);
+  await page.mouse.down();
+  await page.mouse.move(cx + 80, cy + 30, { steps: 4 });
+  await page.mouse.up();
+  await page.mouse.wheel(0, 200);
+  await settled(frame);
+  const mouse = await view();
+  assert.deepEqual(mouse.target, start.target, 'the target stays');
+  assert.notDeepEqual(mouse.eye, start.eye, 'the eye moved');
+  assert.ok(dist(mouse.eye, mouse.target) > dist(start.eye, start.target) * 1.1, 'the wheel moved the eye away');
+
+  // Touch (real touch events through the DevTools protocol): pinch out 40 -> 120 px
+  // brings the eye 3 times closer; one finger orbits at a constant distance.
+  const cdp = await context.newCDPSession(page);
+  const fingers = (d) => [{ x: cx - d, y: cy, id: 1 }, { x: cx + d, y: cy, id: 2 }];
+  frame = await currentFrame();
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: fingers(20) });
+  for (let d = 25; d <= 60; d += 5) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: fingers(d) });
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await settled(frame);
+  const pinched = await view();
+  const ratio = dist(mouse.eye, mouse.target) / dist(pinched.eye, pinched.target);
+  assert.ok(Math.abs(ratio - 3) < 0.05, `pinching 40 -> 120 px zooms 3 times (${ratio})`);
+  frame = await currentFrame();
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: cx, y: cy, id: 3 }] });
+  for (let d = 10; d <= 60; d += 10) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: cx + d, y: cy, id: 3 }] });
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await settled(frame);
+  const dragged = await view();
+  assert.notDeepEqual(dragged.eye, pinched.eye, 'one finger orbits');
+  assert.ok(Math.abs(dist(dragged.eye, dragged.target) - dist(pinched.eye, pinched.target)) < 1e-9, 'at the same distance');
+  await cdp.detach();
+
+  await page.click('#reset-view');
+  await page.waitForFunction((b) => document.getElementById('preview').dataset.eye === JSON.stringify(b), start.eye);
+});
+
+test('errors: shown beside the input, with the code and the position marked', async () => {
+  await page.click('#tab-parametric');
+  const bad = '2*s/(1+s^2+';
+  const reference = await postJson('/v1/implicitize', { x: bad, y: SPHERE.y, z: SPHERE.z });
+  assert.equal(reference.status, 400);
+  const { code, position, field } = reference.json.error;
+  assert.equal(field, 'x');
+  assert.ok(Number.isInteger(position));
+  await page.fill('#x', bad);
+  await page.fill('#y', SPHERE.y);
+  await page.fill('#z', SPHERE.z);
+  await page.click('#implicitize');
+  await page.waitForSelector('#x-error:not([hidden])');
+  const message = await page.textContent('#x-error');
+  assert.ok(message.includes(code), `the code ${code} is shown: ${message}`);
+  assert.equal(await page.getAttribute('#x-error', 'data-position'), String(position));
+  assert.equal(await page.getAttribute('#x', 'aria-invalid'), 'true');
+  assert.equal(await page.isHidden('#y-error'), true);
+  const selection = await page.evaluate(() => {
+    const x = document.getElementById('x');
+    return [document.activeElement === x, x.selectionStart];
+  });
+  assert.deepEqual(selection, [true, position], 'the position is selected in the input');
+  assert.equal(await page.locator('#x-error .caret .pointer').count(), 1, 'a caret marks the position');
+  assert.equal(await page.getAttribute('#progress', 'data-state'), 'error');
+  // Editing the input clears its error.
+  await page.fill('#x', SPHERE.x);
+  assert.equal(await page.isHidden('#x-error'), true);
+
+  // An implicit equation with an error, in the implicit mode.
+  await page.click('#tab-implicit');
+  const badEquation = 'x^2+y^2+z^2-1)';
+  const ref2 = await postJson('/v1/sdf', { implicit: badEquation, mode: 'safe', box: [-1, -1, -1, 1, 1, 1], name: 'surface' });
+  assert.equal(ref2.status, 400);
+  await page.fill('#equation', badEquation);
+  await page.press('#equation', 'Enter');
+  await page.waitForSelector('#equation-error:not([hidden])');
+  assert.ok((await page.textContent('#equation-error')).includes(ref2.json.error.code));
+  assert.equal(await page.getAttribute('#equation-error', 'data-position'), String(ref2.json.error.position));
+
+  // A parametrization whose image is a curve: no single equation, generators listed.
+  await page.click('#tab-parametric');
+  await page.fill('#x', 't');
+  await page.fill('#y', 't^2');
+  await page.fill('#z', 't^3');
+  await page.click('#implicitize');
+  await page.waitForSelector('#general-error:not([hidden])');
+  const general = await page.textContent('#general-error');
+  assert.ok(general.includes('no_single_equation'), general);
+  assert.ok(general.includes('generators'), general);
+});
+
+test('typing an implicit equation directly draws it', async () => {
+  await page.click('#tab-implicit');
+  const frame = await currentFrame();
+  const torus = '(x^2+y^2+z^2+3)^2-16*(x^2+y^2)';
+  await page.fill('#equation', torus);
+  await page.fill('#box', '-3, -3, -1, 3, 3, 1');
+  await page.click('#draw');
+  await waitForImage(torus, 'safe', frame);
+  assert.equal(await page.textContent('#implicit'), `${torus} = 0`);
+  assert.equal(await page.textContent('#degree'), '4');
+  assert.equal(await page.isHidden('#equation-error'), true);
+});
+
+test('a long request shows its elapsed time and Cancel stops it, here and on the server', async () => {
+  const hard = JSON.parse(fs.readFileSync(path.join(sharedDir, 'bench', 'surfaces_hard.json'), 'utf8')).find((s) => s.name === 'tp_33');
+  assert.ok(hard, 'tp_33 in surfaces_hard.json');
+  const cancelledBefore = await metric('implicitizer_computations_cancelled_total');
+  await page.click('#tab-parametric');
+  await page.fill('#x', hard.x);
+  await page.fill('#y', hard.y);
+  await page.fill('#z', hard.z);
+  await page.selectOption('#method', 'groebner');
+  await page.selectOption('#timeout', '60000');
+  await page.click('#implicitize');
+  await page.waitForSelector('#progress[data-state="busy"]');
+  assert.equal(await page.isVisible('#cancel'), true);
+  assert.equal(await page.isDisabled('#implicitize'), true);
+  assert.equal(await page.textContent('#progress-text'), 'Implicitizing…');
+  const first = await page.textContent('#progress-time');
+  await page.waitForTimeout(1500);
+  const second = await page.textContent('#progress-time');
+  assert.match(second, /^\d+\.\d s$/);
+  assert.notEqual(first, second, 'the elapsed time ticks');
+  await page.click('#cancel');
+  await page.waitForSelector('#progress[data-state="idle"]', { timeout: 5000 });
+  assert.match(await page.textContent('#progress-text'), /^Cancelled after \d+\.\d s\.$/);
+  assert.equal(await page.isHidden('#cancel'), true);
+  assert.equal(await page.isEnabled('#implicitize'), true);
+  // The server noticed the closed connection and cancelled the computation.
+  const deadline = Date.now() + 15000;
+  let cancelled = cancelledBefore;
+  while (Date.now() < deadline && cancelled <= cancelledBefore) {
+    await new Promise((resolve) => setTimeout(resolve, 250));
+    cancelled = await metric('implicitizer_computations_cancelled_total');
+  }
+  assert.ok(cancelled > cancelledBefore, `implicitizer_computations_cancelled_total went from ${cancelledBefore} to ${cancelled}`);
+  await page.selectOption('#method', 'auto');
+  await page.selectOption('#timeout', '10000');
+});
+
+test('without WebGL2 the page says so and shows the CPU renderer instead', async () => {
+  const plain = await launchChromium(['--disable-webgl', '--disable-3d-apis']);
+  try {
+    const p = await plain.newPage({ viewport: { width: 1280, height: 800 } });
+    await p.goto(server.url + '/');
+    await p.waitForSelector('body[data-ready="true"]');
+    assert.equal(await p.getAttribute('#preview', 'data-webgl2'), 'no');
+    await p.waitForSelector('#webgl-unavailable:not([hidden])');
+    assert.match(await p.textContent('#webgl-unavailable'), /WebGL2 is not available/);
+    assert.equal(await p.isHidden('#preview'), true);
+    // The initial example still gets its equation, and the server's image appears.
+    await p.waitForFunction(() => {
+      const img = document.getElementById('cpu-fallback');
+      return !img.hidden && img.complete && img.naturalWidth > 0;
+    }, null, { timeout: 60000 });
+    assert.match(await p.textContent('#implicit'), /^x\^4/);
+  } finally {
+    await plain.close();
+  }
+});
+
+test('no errors in the page console', () => {
+  assert.deepEqual(pageErrors, []);
+});
