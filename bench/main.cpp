@@ -15,10 +15,11 @@
 /// the answers are compared up to a non-zero rational factor; when Singular gives no
 /// answer, ours is compared with shared/bench/expected/NAME.txt if it exists.
 ///
-/// With --routes, each surface is run by every route (groebner, resultant, auto) under
-/// the same repeat and budget policy, beside Singular once, in one table whose last
-/// ratio, auto / min(groebner, resultant), is what auto's choice of route costs
-/// against an oracle that knew the faster route.
+/// With --routes, each surface is run by every route (groebner, resultant,
+/// interpolation, auto) under the same repeat and budget policy, beside Singular
+/// once, in one table whose last ratio, auto / min(groebner, resultant), is what
+/// auto's choice of route costs against an oracle that knew the faster of the two
+/// routes auto chooses from.
 ///
 /// This is not a test: it is not registered with ctest and its exit status only says
 /// whether an answer differed or a run failed (1) or not (0), never how fast it was.
@@ -53,16 +54,16 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: implicitizer-bench [--suite public|hard|all] [--only NAME,NAME...]\n"
-    "                          [--method auto|groebner|resultant | --routes] [--repeat N]\n"
-    "                          [--repeat-below SECONDS] [--budget SECONDS] [--markdown]\n"
+    "                          [--method auto|groebner|resultant|interpolation | --routes]\n"
+    "                          [--repeat N] [--repeat-below SECONDS] [--budget SECONDS] [--markdown]\n"
     "                          [--no-singular] [--singular PATH] [--surfaces DIR]\n"
     "\n"
     "Times implicitize() on the benchmark surfaces and Singular's eliminate on the same\n"
     "ideal, in the same run. --method picks our route (the column \"method\" shows the one\n"
-    "taken); --routes instead times every route (groebner, resultant, auto) on each\n"
-    "surface beside Singular, with the ratios auto / Singular and auto / min(groebner,\n"
-    "resultant). Defaults: --suite all --method auto --repeat 5 --repeat-below 1\n"
-    "--budget 60 --singular Singular --surfaces " IMPLICITIZER_BENCH_DIR "\n";
+    "taken); --routes instead times every route (groebner, resultant, interpolation, auto)\n"
+    "on each surface beside Singular, with the ratios auto / Singular and\n"
+    "auto / min(groebner, resultant). Defaults: --suite all --method auto --repeat 5\n"
+    "--repeat-below 1 --budget 60 --singular Singular --surfaces " IMPLICITIZER_BENCH_DIR "\n";
 
 /// The command line.
 struct Config {
@@ -192,6 +193,8 @@ const char* method_name(ImplicitizationMethod method) {
       return "groebner";
     case ImplicitizationMethod::resultant:
       return "resultant";
+    case ImplicitizationMethod::interpolation:
+      return "interpolation";
     case ImplicitizationMethod::automatic:
       break;
   }
@@ -559,16 +562,18 @@ Row measure_surface(const Surface& surface, const Config& config) {
 struct RoutesRow {
   std::string name;
   std::string degree;
-  std::string groebner;          ///< time of the Gröbner route
-  std::string resultant;         ///< time of the resultant route, or "base points"
-  std::string resultant_matrix;  ///< formulation, matrix size and primes of the resultant route
-  std::string automatic;         ///< time of auto
-  std::string auto_route;        ///< the route auto took
+  std::string groebner;              ///< time of the Gröbner route
+  std::string resultant;             ///< time of the resultant route, or "base points"
+  std::string resultant_matrix;      ///< formulation, matrix size and primes of the resultant route
+  std::string interpolation;         ///< time of the interpolation route
+  std::string interpolation_matrix;  ///< degree found / bound, matrix size and primes of it
+  std::string automatic;             ///< time of auto
+  std::string auto_route;            ///< the route auto took
   std::string singular;
   std::string auto_vs_singular;      ///< wall times
   std::string auto_cpu_vs_singular;  ///< CPU times (auto's counts every thread)
   std::string auto_vs_best;          ///< auto / min(groebner, resultant), wall times
-  std::string runs;                  ///< runs of groebner / resultant / auto / Singular
+  std::string runs;                  ///< runs of groebner / resultant / interpolation / auto / Singular
   std::string check;
   bool failed = false;  ///< an answer differed, had the wrong degree, or a run failed
 };
@@ -579,6 +584,13 @@ std::string describe_resultant(const AuxiliaryResultantStats& stats) {
                      std::to_string(stats.matrix_size);
   const std::size_t primes = stats.determinant.primes;
   return text + ", " + std::to_string(primes) + (primes == 1 ? " prime" : " primes");
+}
+
+/// "degree 2 of 4, 10 columns, 3 primes": what the interpolation route solved.
+std::string describe_interpolation(const InterpolationStats& stats) {
+  return "degree " + std::to_string(stats.degree) + " of " + std::to_string(stats.degree_bound) + ", " +
+         std::to_string(stats.columns) + " columns, " + std::to_string(stats.primes) +
+         (stats.primes == 1 ? " prime" : " primes");
 }
 
 RoutesRow measure_routes(const Surface& surface, const Config& config) {
@@ -597,6 +609,7 @@ RoutesRow measure_routes(const Surface& surface, const Config& config) {
 
   const OurRun groebner = time_implicitize(p, ImplicitizationMethod::groebner, config);
   const OurRun resultant = time_implicitize(p, ImplicitizationMethod::resultant, config);
+  const OurRun interpolation = time_implicitize(p, ImplicitizationMethod::interpolation, config);
   const OurRun automatic = time_implicitize(p, ImplicitizationMethod::automatic, config);
   const std::optional<SingularRun> theirs = time_singular(p, config);
 
@@ -605,6 +618,10 @@ RoutesRow measure_routes(const Surface& surface, const Config& config) {
   row.resultant_matrix = resultant.status == OurRun::Status::ok && resultant.result.resultant_stats
                              ? describe_resultant(*resultant.result.resultant_stats)
                              : "—";
+  row.interpolation = our_time_cell(interpolation, config);
+  row.interpolation_matrix = interpolation.status == OurRun::Status::ok && interpolation.result.interpolation_stats
+                                 ? describe_interpolation(*interpolation.result.interpolation_stats)
+                                 : "—";
   row.automatic = our_time_cell(automatic, config);
   row.auto_route = automatic.status == OurRun::Status::ok ? automatic.result.method : "—";
   row.singular = singular_time_cell(theirs, config);
@@ -624,12 +641,12 @@ RoutesRow measure_routes(const Surface& surface, const Config& config) {
   }
   row.auto_vs_best = format_ratio_cell(wall_term(automatic, config), best);
   row.runs = std::to_string(groebner.times_ms.size()) + " / " + std::to_string(resultant.times_ms.size()) + " / " +
-             std::to_string(automatic.times_ms.size()) + " / " +
+             std::to_string(interpolation.times_ms.size()) + " / " + std::to_string(automatic.times_ms.size()) + " / " +
              (theirs ? std::to_string(theirs->times_ms.size()) : std::string("—"));
 
   std::vector<const ImplicitizeResult*> answers;
   std::string problems;
-  for (const OurRun* route : {&groebner, &resultant, &automatic}) {
+  for (const OurRun* route : {&groebner, &resultant, &interpolation, &automatic}) {
     if (route->status == OurRun::Status::ok) {
       answers.push_back(&route->result);
       if (surface.degree > 0 && route->result.degree != surface.degree) {
@@ -639,8 +656,9 @@ RoutesRow measure_routes(const Surface& surface, const Config& config) {
       problems += "; error: " + route->message;
     }
   }
-  // Base points are the resultant route's answer; for Gröbner or auto they would be a bug.
-  if (groebner.status == OurRun::Status::base_points || automatic.status == OurRun::Status::base_points) {
+  // Base points are the resultant route's answer; for the others they would be a bug.
+  if (groebner.status == OurRun::Status::base_points || interpolation.status == OurRun::Status::base_points ||
+      automatic.status == OurRun::Status::base_points) {
     problems += "; base_points outside the resultant route";
   }
   if (theirs && theirs->status == SingularRun::Status::error) problems += "; Singular: " + theirs->message;
@@ -663,7 +681,7 @@ const std::vector<Column> kColumns = {
     {"surface", "surface", 22},
     {"degree", "degree", 6},
     {"ours", "ours", 9},
-    {"method", "method", 9},
+    {"method", "method", 13},
     {"Singular", "Singular", 9},
     {"ours / Singular", "ratio", 7},
     {"CPU ours / Singular", "CPU ratio", 9},
@@ -686,20 +704,34 @@ const std::vector<Column> kRoutesColumns = {
     {"groebner", "groebner", 11},
     {"resultant", "resultant", 11},
     {"resultant matrix", "matrix", 24},
+    {"interpolation", "interp", 11},
+    {"interpolation matrix", "interp matrix", 34},
     {"auto", "auto", 9},
     {"auto took", "auto took", 9},
     {"Singular", "Singular", 9},
     {"auto / Singular", "auto/Sing", 9},
     {"CPU auto / Singular", "CPU a/S", 7},
     {"auto / best route", "auto/best", 9},
-    {"runs (g / r / a / S)", "runs g/r/a/S", 12},
+    {"runs (g / r / i / a / S)", "runs g/r/i/a/S", 14},
     {"answers", "answers", 10},
 };
 
 std::vector<std::string> cells_of(const RoutesRow& row) {
-  return {row.name,         row.degree,     row.groebner, row.resultant,        row.resultant_matrix,
-          row.automatic,    row.auto_route, row.singular, row.auto_vs_singular, row.auto_cpu_vs_singular,
-          row.auto_vs_best, row.runs,       row.check};
+  return {row.name,
+          row.degree,
+          row.groebner,
+          row.resultant,
+          row.resultant_matrix,
+          row.interpolation,
+          row.interpolation_matrix,
+          row.automatic,
+          row.auto_route,
+          row.singular,
+          row.auto_vs_singular,
+          row.auto_cpu_vs_singular,
+          row.auto_vs_best,
+          row.runs,
+          row.check};
 }
 
 // Columns count characters, not bytes: "µs" and "—" are several bytes in UTF-8.
@@ -781,7 +813,8 @@ int run(const Config& config) {
             << "runs under " << format_seconds(config.repeat_below_seconds) << " repeated " << config.repeat
             << " times, median shown\n"
             << bullet
-            << (config.routes ? std::string("ours: every route (groebner, resultant, auto), each under that policy")
+            << (config.routes ? std::string("ours: every route (groebner, resultant, interpolation, auto), each under "
+                                            "that policy")
                               : "ours: --method " + std::string(method_name(config.method)))
             << '\n';
 

@@ -51,7 +51,8 @@ options:
   --method M            auto (default): the resultant when it applies and there are
                         no base points, else groebner; groebner: Buchberger;
                         resultant: the auxiliary resultant, or exit 4 (base_points);
-                        interpolation is not built yet (usage error)
+                        interpolation: the kernel of evaluated monomials modulo
+                        primes (any parametrization, base points or not)
   --timeout SECONDS     wall-time limit, > 0 (default: none)
   --max-terms N         largest number of terms of any intermediate polynomial (default 0 = none)
   --strategy S          S-pair selection: auto (default: sugar for elimination
@@ -81,8 +82,8 @@ options:
                         (one weight per variable, in [0, 1024])
   --eliminate s,t       print the generators of the elimination ideal instead (the
                         ideal intersected with the ring of the other variables, under
-                        --order); the basis is then computed in a block order with s,t
-                        first; --json shows both
+                        --order); the basis is then computed in an elimination order
+                        for s,t (docs/cli.md); --json shows both
   --timeout SECONDS     wall-time limit, > 0 (default: none)
   --max-terms N         largest number of terms of any intermediate polynomial (default 0 = none)
   --strategy S          auto (default), normal or sugar

@@ -25,18 +25,14 @@ std::vector<OptionSpec> option_specs() {
   return spec;
 }
 
-// The method is checked before anything is computed: an unknown or unbuilt method is
-// a usage error (exit 2), whatever the expressions are.
+// The method is checked before anything is computed: an unknown method is a usage
+// error (exit 2), whatever the expressions are.
 void check_method(const std::string& method, bool json) {
   try {
     (void)parse_implicitization_method(method);
   } catch (const InputError& e) {
-    const bool later = method == "interpolation";
-    const std::string message =
-        later ? "method '" + method + "' is not built yet (available: auto, groebner, resultant)"
-              : "unknown method '" + method + "' (expected auto, groebner, resultant or interpolation)";
-    if (json) std::cout << encode_error(InputError(e.code(), message).in_field("method")) << '\n';
-    throw UsageError(message);
+    if (json) std::cout << encode_error(e.in_field("method")) << '\n';
+    throw UsageError(e.what());
   }
 }
 

@@ -96,7 +96,6 @@ expect_status "missing --y" 2 "missing --y" implicitize --x s --z t
 expect_status "bad timeout" 2 "timeout" implicitize --x s+t --y s --z t --timeout abc
 expect_status "zero timeout" 2 "timeout" implicitize --x s+t --y s --z t --timeout 0
 expect_status "negative timeout" 2 "timeout" implicitize --x s+t --y s --z t --timeout -1
-expect_status "interpolation not built" 2 "not built yet" implicitize --x s+t --y s --z t --method interpolation
 expect_status "unknown method" 2 "unknown method" implicitize --x s+t --y s --z t --method magic
 expect_status "bad strategy" 2 "strategy" implicitize --x s+t --y s --z t --strategy fast
 expect_status "bad criteria" 2 "criteria" implicitize --x s+t --y s --z t --criteria all
@@ -134,7 +133,21 @@ expect_json "no single equation JSON" 4 "
 j['error']['code'] == 'no_single_equation' and 'x^2-y' in j['error']['generators']" \
   implicitize --x t --y "t^2" --z "t^3" --json
 expect_json "unknown method JSON" 2 "j['error']['code'] == 'unknown_method' and j['error']['field'] == 'method'" \
-  implicitize --x s+t --y s --z t --method interpolation --json
+  implicitize --x s+t --y s --z t --method magic --json
+
+# ---- implicitize --method interpolation ----
+expect "sphere by interpolation" 0 "x^2+y^2+z^2-1" \
+  implicitize --x "2*s/(1+s^2+t^2)" --y "2*t/(1+s^2+t^2)" --z "(s^2+t^2-1)/(1+s^2+t^2)" --method interpolation
+expect_json "interpolation JSON" 0 "
+j['implicit'] == 'x^2+y^2+z^2-1' and j['method'] == 'interpolation' and j['verified'] is True
+and j['stats']['interpolation']['degree_bound'] == 4 and j['stats']['interpolation']['degree'] == 2
+and j['stats']['interpolation']['columns'] == 10 and j['stats']['interpolation']['primes'] >= 1
+and all(k in j['stats']['interpolation'] for k in ['rows','unlucky_primes','degree_probes','rejected_points',
+  'rejected_candidates','modulus_bits','threads','search_ms','images_ms','reconstruction_ms'])" \
+  implicitize --x "2*s/(1+s^2+t^2)" --y "2*t/(1+s^2+t^2)" --z "(s^2+t^2-1)/(1+s^2+t^2)" --method interpolation --json
+expect "curve by interpolation" 0 "x^3+y^3-3*x*y" implicitize --x "3*t/(1+t^3)" --y "3*t^2/(1+t^3)" --method interpolation
+expect_status "twisted cubic by interpolation" 4 "not a surface|curve or a point" \
+  implicitize --x t --y "t^2" --z "t^3" --method interpolation
 
 # ---- implicitize: plane curves (no --z) ----
 expect "nodal cubic" 0 "x^3+x^2-y^2" implicitize --x "t^2-1" --y "t^3-t"

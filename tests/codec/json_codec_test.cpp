@@ -254,6 +254,13 @@ TEST(AnswerImplicitizeRequest, EncodesTheContractShape) {
   EXPECT_NE(groebner.find(R"("method":"groebner")"), std::string::npos);
   EXPECT_EQ(groebner.find(R"("resultant":{)"), std::string::npos) << "Gröbner was forced: no probe";
   r.method = "interpolation";
+  const std::string interpolation = encode_implicitize_response(answer_implicitize_request(r));
+  EXPECT_NE(interpolation.find(R"("method":"interpolation","verified":true)"), std::string::npos) << interpolation;
+  EXPECT_NE(interpolation.find(R"("interpolation":{"degree_bound":1,"degree":1,"rows":12,"columns":4,"primes":)"),
+            std::string::npos)
+      << interpolation;
+  EXPECT_EQ(interpolation.find(R"("resultant":{)"), std::string::npos) << interpolation;
+  r.method = "magic";
   const InputError method = input_error_of([&] { answer_implicitize_request(r); });
   EXPECT_EQ(method.code(), "unknown_method");
   EXPECT_EQ(method.field(), "method");

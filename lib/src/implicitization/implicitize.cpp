@@ -29,10 +29,7 @@ ImplicitizationMethod parse_implicitization_method(const std::string& name) {
   if (name == "auto") return ImplicitizationMethod::automatic;
   if (name == "groebner") return ImplicitizationMethod::groebner;
   if (name == "resultant") return ImplicitizationMethod::resultant;
-  if (name == "interpolation") {
-    throw InputError("unknown_method",
-                     "method 'interpolation' is not available in this version (use auto, groebner or resultant)");
-  }
+  if (name == "interpolation") return ImplicitizationMethod::interpolation;
   throw InputError("unknown_method", "unknown method '" + name + "' (expected auto, groebner, resultant or interpolation)");
 }
 
@@ -222,6 +219,19 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
   const std::size_t parameters = p.parameter_ring->num_variables();
   const bool resultant_applies = parameters + 1 == coordinates;
   std::optional<AuxiliaryResultantStats> probe;
+  if (options.method == ImplicitizationMethod::interpolation) {
+    InterpolationOptions interpolation;
+    interpolation.budget = budget;
+    InterpolationResult answer = implicitize_by_interpolation(p, interpolation);
+    ImplicitizeResult result;
+    result.implicit = std::move(answer.implicit);
+    result.method = "interpolation";
+    result.verified = true;  // by substitution inside the route, which returns nothing else
+    result.verify_ms = answer.stats.verify_ms;
+    result.interpolation_stats = answer.stats;
+    finish(result, p, budget, start);
+    return result;
+  }
   if (options.method == ImplicitizationMethod::resultant) {
     if (!resultant_applies) {
       throw InputError("method_not_applicable",

@@ -214,6 +214,40 @@ void write_resultant_stats(Writer& w, const AuxiliaryResultantStats& s, std::int
   w.EndObject();
 }
 
+// The interpolation route's statistics (method interpolation).
+void write_interpolation_stats(Writer& w, const InterpolationStats& s) {
+  w.StartObject();
+  write_key(w, "degree_bound");
+  w.Int(s.degree_bound);
+  write_key(w, "degree");
+  w.Int(s.degree);
+  write_key(w, "rows");
+  w.Uint64(s.rows);
+  write_key(w, "columns");
+  w.Uint64(s.columns);
+  write_key(w, "primes");
+  w.Uint64(s.primes);
+  write_key(w, "unlucky_primes");
+  w.Uint64(s.unlucky_primes);
+  write_key(w, "degree_probes");
+  w.Uint64(s.degree_probes);
+  write_key(w, "rejected_points");
+  w.Uint64(s.rejected_points);
+  write_key(w, "rejected_candidates");
+  w.Uint64(s.rejected_candidates);
+  write_key(w, "modulus_bits");
+  w.Uint64(s.modulus_bits);
+  write_key(w, "threads");
+  w.Uint(s.threads);
+  write_key(w, "search_ms");
+  write_milliseconds(w, s.search_ms);
+  write_key(w, "images_ms");
+  write_milliseconds(w, s.images_ms);
+  write_key(w, "reconstruction_ms");
+  write_milliseconds(w, s.reconstruction_ms);
+  w.EndObject();
+}
+
 std::string finish(const rapidjson::StringBuffer& buffer) { return std::string(buffer.GetString(), buffer.GetSize()); }
 
 }  // namespace
@@ -478,6 +512,10 @@ std::string encode_implicitize_response(const ImplicitizeResult& result) {
   if (result.resultant_stats) {
     write_key(w, "resultant");
     write_resultant_stats(w, *result.resultant_stats, result.map_degree);
+  }
+  if (result.interpolation_stats) {
+    write_key(w, "interpolation");
+    write_interpolation_stats(w, *result.interpolation_stats);
   }
   w.EndObject();
   write_key(w, "reproduce");

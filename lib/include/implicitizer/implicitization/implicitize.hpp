@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "implicitizer/groebner/buchberger.hpp"
+#include "implicitizer/implicitization/interpolation.hpp"
 #include "implicitizer/implicitization/parametrization.hpp"
 #include "implicitizer/resultant/auxiliary_resultant.hpp"
 
@@ -25,13 +26,14 @@ inline RingPtr implicit_ring(std::size_t coordinates) { return coordinates == 2 
 
 /// Which route computes the equation.
 enum class ImplicitizationMethod {
-  automatic,  ///< the auxiliary resultant when it applies, else Gröbner (docs/algorithms.md)
-  groebner,   ///< elimination with Buchberger's algorithm
-  resultant,  ///< the auxiliary resultant; refused (base_points) when it vanishes
+  automatic,      ///< the auxiliary resultant when it applies, else Gröbner (docs/algorithms.md)
+  groebner,       ///< elimination with Buchberger's algorithm
+  resultant,      ///< the auxiliary resultant; refused (base_points) when it vanishes
+  interpolation,  ///< the kernel of evaluated monomials modulo primes (interpolation.hpp)
 };
 
-/// Parses `auto`, `groebner` and `resultant`; throws InputError (`unknown_method`)
-/// otherwise, naming `interpolation` as not yet built.
+/// Parses `auto`, `groebner`, `resultant` and `interpolation`; throws InputError
+/// (`unknown_method`) otherwise.
 ImplicitizationMethod parse_implicitization_method(const std::string& name);
 
 /// Options of implicitize().
@@ -44,7 +46,7 @@ struct ImplicitizeOptions {
 struct ImplicitizeResult {
   Polynomial implicit{space_ring()};  ///< primitive, positive leading coefficient, in implicit_ring()
   std::int32_t degree = 0;         ///< total degree of `implicit`
-  std::string method;              ///< the route used ("groebner" or "resultant")
+  std::string method;              ///< the route used ("groebner", "resultant" or "interpolation")
   std::string route;               ///< with method auto: why that route (empty otherwise)
   bool verified = false;           ///< substitution into `implicit` gave exactly 0
   double elapsed_ms = 0;           ///< wall time of the whole call
@@ -53,6 +55,8 @@ struct ImplicitizeResult {
   /// Of the auxiliary resultant (resultant route; also set when `auto` probed it and
   /// fell back to Gröbner, with dixon_vanishes and macaulay_vanishes true).
   std::optional<AuxiliaryResultantStats> resultant_stats;
+  /// Of the interpolation route (method interpolation only).
+  std::optional<InterpolationStats> interpolation_stats;
   /// l in Res_aux = c·f^l: the degree of the parametrization as a map onto its
   /// image (resultant route; 0 when unknown).
   std::int32_t map_degree = 0;
@@ -70,6 +74,8 @@ struct ImplicitizeResult {
 ///     (Sylvester); NoSingleEquation with code `base_points` when the auxiliary
 ///     resultant vanishes identically (Theorem 1.14), InputError
 ///     `method_not_applicable` for other numbers of parameters;
+///   - interpolation: implicitize_by_interpolation() under the budget of
+///     `options.groebner` (any number of parameters, base points or not);
 ///   - auto: resultant when it applies, else groebner (the rule and the measurements
 ///     behind it are in docs/algorithms.md).
 /// Throws NoSingleEquation when the ideal is zero or needs several generators (the

@@ -22,7 +22,7 @@ struct ImplicitizeRequest {
   std::optional<std::string> z;
   /// Explicit parameter names; absent means "every identifier other than x, y, z".
   std::optional<std::vector<std::string>> parameters;
-  /// `auto`, `groebner` or `resultant`; `interpolation` is refused as not yet built.
+  /// `auto`, `groebner`, `resultant` or `interpolation`.
   std::string method = "auto";
   /// Wall-time limit in seconds; absent or <= 0 means none (the caller may impose its own).
   std::optional<double> timeout_seconds;
