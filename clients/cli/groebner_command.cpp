@@ -18,8 +18,8 @@ namespace {
 constexpr const char* kCommand = "groebner";
 
 std::vector<OptionSpec> option_specs() {
-  std::vector<OptionSpec> spec = {{"vars", true},      {"order", true}, {"weights", true},
-                                  {"eliminate", true}, {"json", false}, {"help", false}};
+  std::vector<OptionSpec> spec = {{"vars", true},   {"order", true},    {"weights", true}, {"eliminate", true},
+                                  {"method", true}, {"modular", false}, {"json", false},   {"help", false}};
   spec.insert(spec.end(), std::begin(kBuchbergerOptions), std::end(kBuchbergerOptions));
   return spec;
 }
@@ -59,6 +59,18 @@ int run_groebner_command(std::span<const std::string> args) {
       request.weights = std::move(w);
     }
     if (const auto eliminate = arguments.value("eliminate")) request.eliminate = split_list(*eliminate, "eliminate");
+    if (const auto method = arguments.value("method")) {
+      if (*method != "auto" && *method != "buchberger" && *method != "modular") {
+        throw UsageError("--method must be auto, buchberger or modular, not '" + *method + "'");
+      }
+      request.method = *method;
+    }
+    if (arguments.has("modular")) {
+      if (arguments.value("method") && request.method != "modular") {
+        throw UsageError("--modular contradicts --method " + request.method);
+      }
+      request.method = "modular";
+    }
     request.timeout_seconds = timeout_from(arguments);
     params = buchberger_params_from(arguments);
   } catch (const UsageError& e) {

@@ -84,6 +84,9 @@ options:
                         ideal intersected with the ring of the other variables, under
                         --order); the basis is then computed in an elimination order
                         for s,t (docs/cli.md); --json shows both
+  --method M            auto (default): Buchberger over Q for 0.1 s, then modular;
+                        buchberger; modular: modulo primes, lifted, proven over Q
+  --modular             the same as --method modular
   --timeout SECONDS     wall-time limit, > 0 (default: none)
   --max-terms N         largest number of terms of any intermediate polynomial (default 0 = none)
   --strategy S          auto (default), normal or sugar

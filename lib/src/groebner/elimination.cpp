@@ -26,10 +26,10 @@ MonomialOrder elimination_order(std::size_t k, std::size_t n, const MonomialOrde
   return MonomialOrder::block(k, MonomialOrder::grevlex(), remaining_order);
 }
 
-}  // namespace
-
-EliminationResult eliminate(std::span<const Polynomial> generators, std::span<const std::string> eliminate,
-                            const BuchbergerParams& params, const MonomialOrder& remaining_order) {
+// The block ring of `eliminate` and the generators in it; `compute` finds the basis.
+template <class Compute>
+EliminationResult eliminate_with(std::span<const Polynomial> generators, std::span<const std::string> eliminate,
+                                 const MonomialOrder& remaining_order, Compute compute) {
   if (generators.empty()) throw std::invalid_argument("eliminate needs at least one generator");
   const Ring& ring = *generators.front().ring();
   const std::size_t n = ring.num_variables();
@@ -62,8 +62,7 @@ EliminationResult eliminate(std::span<const Polynomial> generators, std::span<co
   std::vector<Polynomial> mapped;
   mapped.reserve(generators.size());
   for (const auto& g : generators) mapped.push_back(g.map_to(result.block_ring, to_block));
-  result.groebner = compute_groebner_basis(mapped, params);
-
+  result.groebner = compute(mapped);
   // Theorem 1.7: the basis elements free of the first block generate the elimination
   // ideal, and form its reduced basis for the restricted order.
   std::vector<std::size_t> back(n);
@@ -76,6 +75,22 @@ EliminationResult eliminate(std::span<const Polynomial> generators, std::span<co
     if (free) result.elimination.push_back(g.map_to(result.remaining_ring, back));
   }
   return result;
+}
+
+}  // namespace
+
+EliminationResult eliminate(std::span<const Polynomial> generators, std::span<const std::string> eliminate,
+                            const BuchbergerParams& params, const MonomialOrder& remaining_order) {
+  return eliminate_with(generators, eliminate, remaining_order,
+                        [&](const std::vector<Polynomial>& mapped) { return compute_groebner_basis(mapped, params); });
+}
+
+EliminationResult eliminate_modular(std::span<const Polynomial> generators, std::span<const std::string> eliminate,
+                                    const ModularGroebnerParams& params, const MonomialOrder& remaining_order,
+                                    ModularGroebnerStats* stats) {
+  return eliminate_with(generators, eliminate, remaining_order, [&](const std::vector<Polynomial>& mapped) {
+    return compute_groebner_basis_modular(mapped, params, stats);
+  });
 }
 
 }  // namespace implicitizer

@@ -96,17 +96,6 @@ void combine(const Ring& ring, const Integer& fa, IntPolynomial& f, std::size_t 
   }
 }
 
-const Reducer* find_reducer(const Ring& ring, const std::int32_t* m, const std::vector<Reducer>& reducers) {
-  const std::uint64_t not_mask = ~ring.divisor_mask(m);
-  const Reducer* best = nullptr;
-  for (const auto& r : reducers) {
-    if ((r.mask & not_mask) != 0) continue;
-    if (!ring.divides(r.polynomial->monomials.data(), m)) continue;
-    if (best == nullptr || r.polynomial->size() < best->polynomial->size()) best = &r;
-  }
-  return best;
-}
-
 }  // namespace
 
 IntPolynomial reduce(const Ring& ring, IntPolynomial f, const std::vector<Reducer>& reducers, bool full,

@@ -10,6 +10,7 @@
 
 #include "implicitizer/core/budget.hpp"
 #include "implicitizer/polynomial/polynomial.hpp"
+#include "reducer.hpp"
 
 namespace implicitizer::detail {
 
@@ -29,17 +30,7 @@ Polynomial to_monic_polynomial(const RingPtr& ring, const IntPolynomial& p);
 // Divides by the gcd of the coefficients and makes the leading coefficient positive.
 void make_primitive(IntPolynomial& p);
 
-// One reducer: a basis element with its leading-monomial divisor mask.
-struct Reducer {
-  const IntPolynomial* polynomial;
-  std::uint64_t mask;
-  std::int32_t sugar;
-};
-
-// Counters updated by reduce().
-struct ReductionCounters {
-  std::size_t steps = 0;
-};
+using Reducer = BasicReducer<IntPolynomial>;
 
 // Reduces f by `reducers` (first the shortest reducer whose leading monomial divides).
 // With `full`, every term is reduced (normal form); otherwise only leading terms.
@@ -50,5 +41,24 @@ IntPolynomial reduce(const Ring& ring, IntPolynomial f, const std::vector<Reduce
 
 // The fraction-free S-polynomial (b/d)·(L/lm f)·f − (a/d)·(L/lm g)·g.
 IntPolynomial s_polynomial(const Ring& ring, const IntPolynomial& f, const IntPolynomial& g);
+
+// The fraction-free integers as a domain of BuchbergerEngine (buchberger_engine.hpp).
+class IntegerArithmetic {
+ public:
+  using Polynomial = IntPolynomial;
+
+  explicit IntegerArithmetic(const Ring& ring) : ring_(ring) {}
+
+  IntPolynomial s_polynomial(const IntPolynomial& f, const IntPolynomial& g) const {
+    return detail::s_polynomial(ring_, f, g);
+  }
+  IntPolynomial reduce(IntPolynomial f, const std::vector<Reducer>& reducers, bool full, const Budget& budget,
+                       ReductionCounters& counters, std::int32_t* sugar) const {
+    return detail::reduce(ring_, std::move(f), reducers, full, budget, counters, sugar);
+  }
+
+ private:
+  const Ring& ring_;
+};
 
 }  // namespace implicitizer::detail

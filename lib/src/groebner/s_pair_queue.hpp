@@ -8,18 +8,18 @@
 #include <vector>
 
 #include "implicitizer/groebner/buchberger.hpp"
-#include "int_polynomial.hpp"
 
 namespace implicitizer::detail {
 
-// A basis element as the queue sees it.
+// A basis element as the queue sees it: its leading monomial, not its polynomial,
+// so that one queue serves every coefficient domain (ℤ fraction-free, ℤ/p).
 struct BasisEntry {
-  IntPolynomial polynomial;
-  std::uint64_t mask = 0;      // divisor mask of the leading monomial
+  std::vector<std::int32_t> lead_monomial;
+  std::uint64_t mask = 0;  // divisor mask of the leading monomial
   std::int32_t sugar = 0;
   std::int32_t lead_degree = 0;
-  bool redundant = false;      // its leading monomial is divisible by a later element's
-  const std::int32_t* lead() const { return polynomial.monomials.data(); }
+  bool redundant = false;  // its leading monomial is divisible by a later element's
+  const std::int32_t* lead() const { return lead_monomial.data(); }
 };
 
 // One S-pair (i < j are basis indices).
@@ -62,8 +62,8 @@ class SPairQueue {
   const Ring& ring_;
   const BuchbergerParams& params_;
   BuchbergerStats& stats_;
-  bool use_sugar_;  // the strategy, with `automatic` resolved for this ring's order
-  std::vector<SPair> heap_;                 // binary heap on before(); dead pairs removed lazily
+  bool use_sugar_;           // the strategy, with `automatic` resolved for this ring's order
+  std::vector<SPair> heap_;  // binary heap on before(); dead pairs removed lazily
   std::size_t alive_ = 0;
   std::unordered_set<std::uint64_t> pending_;  // keys of pairs still queued (Buchberger's criterion)
   std::uint64_t next_serial_ = 0;

@@ -1,5 +1,6 @@
 #include "implicitizer/codec/groebner_request.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <memory>
@@ -41,6 +42,49 @@ std::vector<std::string> variables_of(const GroebnerRequest& request,
   return collect_identifiers(expressions);
 }
 
+enum class GroebnerMethod { automatic, buchberger, modular };
+
+GroebnerMethod method_of(const GroebnerRequest& request) {
+  if (request.method == "auto") return GroebnerMethod::automatic;
+  if (request.method == "buchberger") return GroebnerMethod::buchberger;
+  if (request.method == "modular") return GroebnerMethod::modular;
+  throw InputError("unknown_method", "unknown method '" + request.method + "' (expected auto, buchberger or modular)")
+      .in_field("method");
+}
+
+// What computes a basis: `buchberger(params)` over ℚ, `modular(modular_params,
+// stats)` modulo primes; `auto` gives Buchberger a head start.
+template <class Buchberger, class Modular>
+auto compute_with(GroebnerMethod method, const BuchbergerParams& params, GroebnerAnswer& answer,
+                  Buchberger buchberger, Modular modular) {
+  const auto by_modular = [&] {
+    ModularGroebnerParams modular_params;
+    modular_params.buchberger = params;
+    ModularGroebnerStats stats;
+    auto result = modular(modular_params, stats);
+    answer.method = "modular";
+    answer.modular = stats;
+    return result;
+  };
+  if (method == GroebnerMethod::modular) return by_modular();
+  if (method == GroebnerMethod::automatic) {
+    BuchbergerParams trial = params;
+    trial.budget.set_timeout(std::min(kBuchbergerHeadStartSeconds, params.budget.seconds_left()));
+    try {
+      auto result = buchberger(trial);
+      answer.method = "buchberger";
+      return result;
+    } catch (const LimitExceeded& e) {
+      // The caller's own limits (its deadline, cancellation, the term limit) stop
+      // everything; only the head start's deadline hands over.
+      if (e.limit() != Limit::time || params.budget.is_cancelled() || params.budget.seconds_left() <= 0) throw;
+    }
+    return by_modular();
+  }
+  answer.method = "buchberger";
+  return buchberger(params);
+}
+
 }  // namespace
 
 GroebnerAnswer answer_groebner_request(const GroebnerRequest& request, BuchbergerParams params) {
@@ -60,6 +104,7 @@ GroebnerAnswer answer_groebner_request(const GroebnerRequest& request, Buchberge
     }
   }
   const MonomialOrder order = order_of(request);
+  const GroebnerMethod method = method_of(request);
   const bool eliminating = request.eliminate && !request.eliminate->empty();
 
   // When eliminating, the generators' ring only fixes the order of the remaining
@@ -104,7 +149,12 @@ GroebnerAnswer answer_groebner_request(const GroebnerRequest& request, Buchberge
     }
     EliminationResult result;
     try {
-      result = eliminate(generators, *request.eliminate, params, order);
+      result = compute_with(
+          method, params, answer,
+          [&](const BuchbergerParams& p) { return eliminate(generators, *request.eliminate, p, order); },
+          [&](const ModularGroebnerParams& p, ModularGroebnerStats& stats) {
+            return eliminate_modular(generators, *request.eliminate, p, order, &stats);
+          });
     } catch (const InputError& e) {
       throw e.field().empty()
           ? e.in_field(e.code() == "invalid_order" ? (request.weights ? "weights" : "order") : "eliminate")
@@ -115,7 +165,11 @@ GroebnerAnswer answer_groebner_request(const GroebnerRequest& request, Buchberge
     answer.order = result.block_ring->order().name();
     answer.elimination_ideal = std::move(result.elimination);
   } else {
-    GroebnerResult result = compute_groebner_basis(generators, params);
+    GroebnerResult result = compute_with(
+        method, params, answer, [&](const BuchbergerParams& p) { return compute_groebner_basis(generators, p); },
+        [&](const ModularGroebnerParams& p, ModularGroebnerStats& stats) {
+          return compute_groebner_basis_modular(generators, p, &stats);
+        });
     answer.basis = std::move(result.basis);
     answer.stats = result.stats;
     answer.order = order.name();

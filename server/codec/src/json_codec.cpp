@@ -169,6 +169,42 @@ void write_stats_members(Writer& w, const BuchbergerStats& s) {
   write_milliseconds(w, s.elapsed_ms);
 }
 
+// What the modular Gröbner computation did (modular_groebner.hpp).
+void write_modular_stats(Writer& w, const ModularGroebnerStats& s) {
+  w.StartObject();
+  write_key(w, "primes");
+  w.Uint64(s.primes);
+  write_key(w, "lifted_primes");
+  w.Uint64(s.lifted_primes);
+  write_key(w, "unlucky_primes");
+  w.Uint64(s.unlucky_primes);
+  write_key(w, "bad_primes");
+  w.Uint64(s.bad_primes);
+  write_key(w, "reconstructions");
+  w.Uint64(s.reconstructions);
+  write_key(w, "checking_primes");
+  w.Uint64(s.checking_primes);
+  write_key(w, "rejected_candidates");
+  w.Uint64(s.rejected_candidates);
+  write_key(w, "homogenized");
+  w.Bool(s.homogenized);
+  write_key(w, "proven");
+  w.Bool(s.proven);
+  write_key(w, "verification_pairs");
+  w.Uint64(s.verification_pairs);
+  write_key(w, "threads");
+  w.Uint64(s.threads);
+  write_key(w, "modular_ms");
+  write_milliseconds(w, s.modular_ms);
+  write_key(w, "lift_ms");
+  write_milliseconds(w, s.lift_ms);
+  write_key(w, "verify_ms");
+  write_milliseconds(w, s.verify_ms);
+  write_key(w, "dehomogenize_ms");
+  write_milliseconds(w, s.dehomogenize_ms);
+  w.EndObject();
+}
+
 // The auxiliary resultant's statistics: what the resultant route did, or, when
 // `auto` fell back to Gröbner, what its probe found.
 void write_resultant_stats(Writer& w, const AuxiliaryResultantStats& s, std::int32_t map_degree) {
@@ -275,8 +311,9 @@ GroebnerRequest decode_groebner_request(std::string_view body, const JsonLimits&
   if (const auto* v = reader.take("order")) request.order = read_string(*v, "order");
   if (const auto* v = reader.take("weights")) request.weights = read_ints(*v, "weights");
   if (const auto* v = reader.take("eliminate")) request.eliminate = read_strings(*v, "eliminate");
+  if (const auto* v = reader.take("method")) request.method = read_string(*v, "method");
   if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = read_timeout_seconds(*v);
-  reader.finish("polynomials, variables, order, weights, eliminate, timeout_ms");
+  reader.finish("polynomials, variables, order, weights, eliminate, method, timeout_ms");
   return request;
 }
 
@@ -538,9 +575,15 @@ std::string encode_groebner_response(const GroebnerAnswer& answer) {
   write_polynomials(w, answer.basis);
   write_key(w, "order");
   write_string(w, answer.order);
+  write_key(w, "method");
+  write_string(w, answer.method);
   write_key(w, "stats");
   w.StartObject();
   write_stats_members(w, answer.stats);
+  if (answer.modular) {
+    write_key(w, "modular");
+    write_modular_stats(w, *answer.modular);
+  }
   w.EndObject();
   write_key(w, "elapsed_ms");
   write_milliseconds(w, answer.elapsed_ms);

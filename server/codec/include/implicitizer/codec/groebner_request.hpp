@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "implicitizer/groebner/buchberger.hpp"
+#include "implicitizer/groebner/modular_groebner.hpp"
 #include "implicitizer/polynomial/polynomial.hpp"
 
 namespace implicitizer {
@@ -27,7 +28,14 @@ struct GroebnerRequest {
   std::optional<std::vector<std::string>> eliminate;
   /// Wall-time limit in seconds; absent or <= 0 means none.
   std::optional<double> timeout_seconds;
+  /// `auto` (Buchberger over ℚ first, the proven modular computation if it has not
+  /// finished within kBuchbergerHeadStartSeconds), `buchberger` or `modular`.
+  std::string method = "auto";
 };
+
+/// How long `auto` lets Buchberger's algorithm over ℚ run before it switches to the
+/// modular computation (docs/algorithms.md has the measurements behind it).
+inline constexpr double kBuchbergerHeadStartSeconds = 0.1;
 
 /// What a Gröbner request computed.
 struct GroebnerAnswer {
@@ -37,7 +45,11 @@ struct GroebnerAnswer {
   /// Name of the order `basis` is in (MonomialOrder::name(): `grevlex`,
   /// `weighted(1,2,3;grevlex)`, `block(2:grevlex|lex)`).
   std::string order;
-  BuchbergerStats stats;  ///< of the Buchberger run
+  BuchbergerStats stats;  ///< of the Buchberger run (with `modular`, of one run modulo a prime)
+  /// `buchberger` or `modular`: what computed the basis.
+  std::string method;
+  /// With `modular`: the primes, the lifting and the proof.
+  std::optional<ModularGroebnerStats> modular;
   double elapsed_ms = 0;  ///< wall time of the whole answer, parsing included
   /// With elimination: the reduced basis of the elimination ideal, in the remaining
   /// variables under the requested order. Empty optional without elimination.
@@ -49,7 +61,7 @@ struct GroebnerAnswer {
 /// Throws InputError with its field set: `empty_input` ("polynomials", none given),
 /// parse and evaluation errors ("polynomials[i]"), `invalid_variables` ("variables"),
 /// `unknown_order` / `invalid_order` ("order" / "weights"), `unknown_variable`
-/// ("eliminate"); LimitExceeded when the budget runs out.
+/// ("eliminate"), `unknown_method` ("method"); LimitExceeded when the budget runs out.
 GroebnerAnswer answer_groebner_request(const GroebnerRequest& request, BuchbergerParams params = BuchbergerParams());
 
 }  // namespace implicitizer

@@ -1,0 +1,92 @@
+#pragma once
+/// \file
+/// Reduced Gröbner bases over ℚ computed modulo word-size primes (Arnold 2003,
+/// "Modular algorithms for computing Gröbner bases"; Idrees, Pfister, Steidel 2011,
+/// "Parallelization of modular algorithms"): the reduced basis modulo several primes,
+/// the primes whose leading monomials disagree with the majority dropped as
+/// unlucky, the coefficients lifted by Chinese remaindering and rational
+/// reconstruction, and the candidate proven over ℚ.
+///
+/// The proof (`ModularGroebnerParams::prove`). Let H be homogeneous generators,
+/// K = ⟨H⟩, G the lifted candidate and p one of the primes lifted, whose reduced
+/// basis G_p of K_p = ⟨H mod p⟩ has the leading monomials of G. Checked over ℚ:
+/// (a) every h ∈ H reduces to zero modulo G, so K ⊆ J = ⟨G⟩; (b) G is a Gröbner
+/// basis (Buchberger's criterion on the pairs Gebauer–Möller's update leaves). Then
+/// K = J: in each degree d, dim (K_p)_d ≤ dim K_d (the multiples of H of degree d
+/// span K_d, and their rank can only drop modulo p), so
+///   HF(R/J)(d) = #standard monomials of lm(G) = HF(R/K_p)(d) ≥ HF(R/K)(d) ≥ HF(R/J)(d)
+/// (the first equality because both G and G_p are Gröbner bases with those leading
+/// monomials, the last because K ⊆ J); equal Hilbert functions and K ⊆ J give K = J.
+/// This is Arnold's Theorem 7.1; no prime needs to be "lucky" for it, and (a), (b)
+/// are exact: a wrong candidate is never returned. For generators that are not
+/// homogeneous the argument fails (reduction modulo p can drop degrees), so they are
+/// homogenized with a new variable h under the order >_h (total degree, then the
+/// given order on the old variables), the proof is made there, and h = 1 gives a
+/// Gröbner basis of the original ideal (Cox–Little–O'Shea, IVA §8.4 Thm 4), which is
+/// then reduced. The homogenized basis can be larger than the affine one: that is
+/// the price of a proof (docs/algorithms.md has the measurements).
+///
+/// Without the proof (`prove = false`) the reduced basis modulo each prime is still
+/// computed on homogenized generators (faster, measured), taken to h = 1 and reduced
+/// modulo p, and the affine candidate is returned after a consistency check on one
+/// more prime: only for callers that prove what they use by other means
+/// (implicitization verifies its equation by substitution and minimality).
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "implicitizer/groebner/buchberger.hpp"
+
+namespace implicitizer {
+
+/// Parameters of compute_groebner_basis_modular().
+struct ModularGroebnerParams {
+  /// The selection strategy and criteria of every run modulo a prime (and of the
+  /// verification), and the budget of the whole computation.
+  BuchbergerParams buchberger;
+  /// Prove the candidate over ℚ (the file comment). false: the affine candidate
+  /// after a consistency check on one more prime, for callers that prove it otherwise.
+  bool prove = true;
+  /// 0: the primes just above 2^62 (PrimeSequence). Otherwise the primes from just
+  /// above this value: tests force small primes, unlucky ones among them.
+  std::uint64_t first_prime = 0;
+  /// Primes computed at once, one per thread (0: the hardware's cores).
+  std::size_t threads = 0;
+  /// Without the proof only: lift only the basis elements whose leading monomial
+  /// involves none of the first k variables (for an elimination order for them, the
+  /// reduced basis of the elimination ideal; its coefficients are often far smaller
+  /// than the rest's, so fewer primes lift them). 0: the whole basis.
+  std::size_t lift_only_free_of_first = 0;
+};
+
+/// What the modular computation did.
+struct ModularGroebnerStats {
+  std::size_t primes = 0;               ///< primes whose reduced basis was computed
+  std::size_t lifted_primes = 0;        ///< of which lifted (their leading monomials were the majority's)
+  std::size_t unlucky_primes = 0;       ///< dropped: other leading monomials than the majority's
+  std::size_t checking_primes = 0;      ///< the last batch, computed only to confirm the candidate
+  std::size_t bad_primes = 0;           ///< skipped: dividing a leading coefficient of the generators
+  std::size_t reconstructions = 0;      ///< rational reconstructions attempted
+  std::size_t rejected_candidates = 0;  ///< candidates the consistency check or the proof rejected
+  bool homogenized = false;             ///< the runs modulo p were on homogenized generators
+  bool proven = false;                  ///< the answer was proven over ℚ (file comment)
+  std::size_t verification_pairs = 0;   ///< S-pairs reduced over ℚ by the proof
+  std::size_t threads = 0;              ///< threads used for the primes
+  double modular_ms = 0;                ///< wall time of the runs modulo primes
+  double lift_ms = 0;                   ///< of Chinese remaindering and reconstruction
+  double verify_ms = 0;                 ///< of the proof over ℚ
+  double dehomogenize_ms = 0;           ///< of h = 1 and the reduction of the affine basis over ℚ
+  BuchbergerStats last_prime;           ///< the counters of one run modulo a prime
+};
+
+/// The reduced Gröbner basis of the ideal generated by `generators` (one ring) in that
+/// ring's order, computed modulo primes and, with `params.prove`, proven exact (the
+/// file comment). The basis's stats are those of one run modulo a prime, with
+/// elapsed_ms the whole call's. Throws LimitExceeded when the budget runs out (the
+/// message says in which phase).
+GroebnerResult compute_groebner_basis_modular(std::span<const Polynomial> generators,
+                                              const ModularGroebnerParams& params = ModularGroebnerParams(),
+                                              ModularGroebnerStats* stats = nullptr);
+
+}  // namespace implicitizer

@@ -1,0 +1,197 @@
+// Tests of lib/src/groebner/modular_groebner.cpp (and mod_polynomial.cpp): the
+// multi-modular basis equals the rational one on the property sweep's random ideals
+// under every order, on Katsura and Cyclic, and on ideals whose coefficients need
+// many primes; unlucky and bad primes are detected when small primes are forced; the
+// proof rejects what is not a basis; limits stop it.
+
+#include "implicitizer/groebner/modular_groebner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <span>
+#include <thread>
+#include <utility>
+
+#include "groebner/groebner_support.hpp"
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/groebner/elimination.hpp"
+
+namespace implicitizer {
+namespace {
+
+using testing::parse_all;
+using testing::print_all;
+
+GroebnerResult modular(const std::vector<Polynomial>& generators, ModularGroebnerStats* stats = nullptr,
+                       std::uint64_t first_prime = 0, bool prove = true) {
+  ModularGroebnerParams params;
+  params.first_prime = first_prime;
+  params.prove = prove;
+  params.buchberger.budget.set_timeout(30);
+  return compute_groebner_basis_modular(generators, params, stats);
+}
+
+class ModularGroebnerPropertyTest : public ::testing::TestWithParam<testing::NamedOrder> {};
+
+// The random ideals of the Buchberger sweep: the proven modular basis is the rational
+// reduced basis, letter for letter, under every order (homogenized ones included).
+TEST_P(ModularGroebnerPropertyTest, EqualsTheRationalBasis) {
+  const RingPtr ring = Ring::make({"x", "y", "z"}, GetParam().order);
+  std::size_t homogenized = 0;
+  for (const auto& generators : testing::random_ideals(ring, 30)) {
+    SCOPED_TRACE("ideal " + ::testing::PrintToString(print_all(generators)));
+    const std::optional<GroebnerResult> rational = testing::compute_bounded(generators);
+    ASSERT_TRUE(rational);
+    ModularGroebnerStats stats;
+    const GroebnerResult r = modular(generators, &stats);
+    EXPECT_EQ(print_all(r.basis), print_all(rational->basis));
+    EXPECT_TRUE(stats.proven);
+    EXPECT_GE(stats.lifted_primes, 1u);
+    if (stats.homogenized) ++homogenized;
+  }
+  EXPECT_GT(homogenized, 0u) << "the sweep must exercise the homogenized proof";
+}
+
+INSTANTIATE_TEST_SUITE_P(Orders, ModularGroebnerPropertyTest, ::testing::ValuesIn(testing::property_orders()),
+                         [](const ::testing::TestParamInfo<testing::NamedOrder>& order) { return order.param.name; });
+
+TEST(ModularGroebnerTest, KatsuraAndCyclicAgreeWithBuchberger) {
+  for (const MonomialOrder& order : {MonomialOrder::grevlex(), MonomialOrder::lex()}) {
+    const RingPtr k = Ring::make({"u0", "u1", "u2", "u3"}, order);
+    const RingPtr c = Ring::make({"a", "b", "c", "d"}, order);
+    for (const auto& generators : {testing::katsura(k), testing::cyclic(c)}) {
+      ModularGroebnerStats stats;
+      EXPECT_EQ(print_all(modular(generators, &stats).basis), print_all(compute_groebner_basis(generators).basis));
+      EXPECT_TRUE(stats.proven);
+    }
+  }
+}
+
+// Coefficients of 150 digits in the answer need several 62-bit primes, and the
+// lifted basis must still be exact.
+TEST(ModularGroebnerTest, LargeCoefficientsNeedSeveralPrimes) {
+  const RingPtr ring = Ring::make({"x", "y"});
+  const std::string big = "123456789012345678901234567890123456789012345678901234567890123456789012345";
+  const auto generators = parse_all({"x^2-" + big + "/7*y", "x*y-" + big + "*" + big + "/11"}, ring);
+  ModularGroebnerStats stats;
+  EXPECT_EQ(print_all(modular(generators, &stats).basis), print_all(compute_groebner_basis(generators).basis));
+  EXPECT_GE(stats.lifted_primes, 4u);
+  EXPECT_TRUE(stats.proven);
+}
+
+// With primes forced to start at 10: 11 and 17 divide the leading coefficient 187 of
+// a generator and are skipped as bad; 13 divides no leading coefficient but cancels
+// terms of the basis (1/13 appears in it), so the reduced basis modulo 13 has other
+// leading monomials: unlucky, outvoted by the primes that agree. The answer is still
+// the rational basis, and the candidate lifted before enough primes agreed was
+// rejected by the check on the next prime.
+TEST(ModularGroebnerTest, SmallPrimesUnluckyAndBadAreDropped) {
+  const RingPtr ring = Ring::make({"x", "y", "z"});
+  const auto generators = parse_all({"187*x^2+y", "x*y-13*z^2+1", "y^3-z"}, ring);
+  ModularGroebnerStats stats;
+  const GroebnerResult r = modular(generators, &stats, /*first_prime=*/10);
+  EXPECT_EQ(print_all(r.basis), print_all(compute_groebner_basis(generators).basis));
+  EXPECT_EQ(stats.bad_primes, 2u);
+  EXPECT_EQ(stats.unlucky_primes, 1u);
+  EXPECT_EQ(stats.lifted_primes + stats.unlucky_primes + stats.checking_primes, stats.primes);
+  EXPECT_TRUE(stats.proven);
+}
+
+// A prime that divides a leading coefficient is skipped before any work, even the
+// first one tried (101 here).
+TEST(ModularGroebnerTest, ABadFirstPrimeIsSkipped) {
+  const RingPtr ring = Ring::make({"x", "y"});
+  const auto generators = parse_all({"101*x*y+y^2+x", "x^2-y"}, ring);
+  ModularGroebnerStats stats;
+  const GroebnerResult r = modular(generators, &stats, /*first_prime=*/100);
+  EXPECT_EQ(print_all(r.basis), print_all(compute_groebner_basis(generators).basis));
+  EXPECT_TRUE(stats.proven);
+  EXPECT_EQ(stats.bad_primes, 1u);
+}
+
+// The proof rejects what is not the basis: a candidate lifted from too few small
+// primes reconstructs wrong rationals (here the 1/31603 of the basis needs a modulus
+// above 2·31603²), fails the check on the next prime, and is counted.
+TEST(ModularGroebnerTest, WrongCandidatesAreRejected) {
+  const RingPtr ring = Ring::make({"x", "y", "z"});
+  const auto generators = parse_all({"187*x^2+y", "x*y-13*z^2+1", "y^3-z"}, ring);
+  ModularGroebnerStats stats;
+  modular(generators, &stats, /*first_prime=*/10);
+  EXPECT_GE(stats.rejected_candidates, 1u);
+  EXPECT_GT(stats.reconstructions, stats.rejected_candidates);
+}
+
+TEST(ModularGroebnerTest, UnitAndZeroIdeals) {
+  const RingPtr ring = Ring::make({"x", "y"});
+  EXPECT_EQ(print_all(modular(parse_all({"x^2+1", "x^2"}, ring)).basis), (std::vector<std::string>{"1"}));
+  EXPECT_TRUE(modular(parse_all({"0"}, ring)).basis.empty());
+  EXPECT_TRUE(modular({}).basis.empty());
+}
+
+// Without the proof the candidate is returned after one confirming prime (the runs
+// are still homogenized, then taken to h = 1 modulo p); on these ideals it is the
+// right one.
+TEST(ModularGroebnerTest, WithoutProofTheAffineCandidate) {
+  const RingPtr ring = Ring::make({"x", "y", "z"}, MonomialOrder::lex());
+  for (const auto& generators : testing::random_ideals(ring, 10)) {
+    ModularGroebnerStats stats;
+    const GroebnerResult r = modular(generators, &stats, 0, /*prove=*/false);
+    EXPECT_EQ(print_all(r.basis), print_all(compute_groebner_basis(generators).basis));
+    EXPECT_FALSE(stats.proven);
+    EXPECT_EQ(stats.verification_pairs, 0u);
+  }
+}
+
+// eliminate_modular without the proof, lifting only the elimination ideal: the same
+// generators as Buchberger's elimination, for the twisted cubic's projections and a
+// rational surface (the unit sphere's stereographic parametrization).
+TEST(ModularGroebnerTest, EliminationLiftsOnlyTheEliminationIdeal) {
+  const RingPtr ring = Ring::make({"w", "s", "t", "x", "y", "z"});
+  const auto sphere =
+      parse_all({"(1+s^2+t^2)*x-2*s", "(1+s^2+t^2)*y-2*t", "(1+s^2+t^2)*z-(1-s^2-t^2)", "1-w*(1+s^2+t^2)"}, ring);
+  const RingPtr curve_ring = Ring::make({"t", "x", "y", "z"});
+  const auto cubic = parse_all({"x-t", "y-t^2", "z-t^3"}, curve_ring);
+  const std::vector<std::string> wst = {"w", "s", "t"}, t = {"t"};
+  for (const auto& [generators, eliminated] :
+       {std::pair{sphere, std::span<const std::string>(wst)}, std::pair{cubic, std::span<const std::string>(t)}}) {
+    ModularGroebnerParams params;
+    params.prove = false;
+    params.lift_only_free_of_first = eliminated.size();
+    ModularGroebnerStats stats;
+    const EliminationResult m = eliminate_modular(generators, eliminated, params, MonomialOrder::grevlex(), &stats);
+    const EliminationResult q = eliminate(generators, eliminated);
+    EXPECT_EQ(print_all(m.elimination), print_all(q.elimination));
+    EXPECT_EQ(m.groebner.basis.size(), q.elimination.size()) << "only the elimination ideal is lifted";
+  }
+}
+
+TEST(ModularGroebnerTest, BudgetStopsIt) {
+  const RingPtr ring = Ring::make({"u0", "u1", "u2", "u3", "u4", "u5", "u6"});
+  ModularGroebnerParams params;
+  params.buchberger.budget.set_timeout(0.05);
+  try {
+    compute_groebner_basis_modular(testing::katsura(ring), params);
+    FAIL() << "Katsura-6 in 50 ms";
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit(), Limit::time);
+  }
+  params.buchberger.budget = Budget();
+  params.buchberger.budget.cancel();
+  EXPECT_THROW(compute_groebner_basis_modular(testing::katsura(ring), params), LimitExceeded);
+}
+
+TEST(ModularGroebnerTest, OneThreadAndTwoGiveTheSameBasis) {
+  const RingPtr ring = Ring::make({"u0", "u1", "u2", "u3"});
+  ModularGroebnerParams one, two;
+  one.threads = 1;
+  two.threads = 2;
+  ModularGroebnerStats s1, s2;
+  const auto katsura = testing::katsura(ring);
+  EXPECT_EQ(print_all(compute_groebner_basis_modular(katsura, one, &s1).basis),
+            print_all(compute_groebner_basis_modular(katsura, two, &s2).basis));
+  EXPECT_EQ(s1.threads, 1u);
+  EXPECT_EQ(s2.threads, 2u);
+}
+
+}  // namespace
+}  // namespace implicitizer
