@@ -53,6 +53,8 @@ options:
                         resultant: the auxiliary resultant, or exit 4 (base_points);
                         interpolation: the kernel of evaluated monomials modulo
                         primes (any parametrization, base points or not)
+  --modular             the groebner route modulo primes (the equation proven by
+                        substitution and minimality; Buchberger over Q where not)
   --timeout SECONDS     wall-time limit, > 0 (default: none)
   --max-terms N         largest number of terms of any intermediate polynomial (default 0 = none)
   --strategy S          S-pair selection: auto (default: sugar for elimination

@@ -20,7 +20,7 @@ constexpr const char* kCommand = "implicitize";
 
 std::vector<OptionSpec> option_specs() {
   std::vector<OptionSpec> spec = {{"x", true},      {"y", true},     {"z", true},    {"params", true},
-                                  {"method", true}, {"json", false}, {"help", false}};
+                                  {"method", true}, {"modular", false}, {"json", false}, {"help", false}};
   spec.insert(spec.end(), std::begin(kBuchbergerOptions), std::end(kBuchbergerOptions));
   return spec;
 }
@@ -65,6 +65,7 @@ int run_implicitize_command(std::span<const std::string> args) {
       report.field_texts["parameters"] = *params_text;
     }
     if (const auto method = arguments.value("method")) request.method = *method;
+    request.modular = arguments.has("modular");
     check_method(request.method, report.json);
     request.timeout_seconds = timeout_from(arguments);
     params = buchberger_params_from(arguments);

@@ -169,8 +169,16 @@ expect_status "base points refused" 4 "base points" implicitize --x "s*t" --y t 
 expect_json "base points JSON" 4 "j['error']['code'] == 'base_points'" \
   implicitize --x "2*s/(1+s^2+t^2)" --y "2*t/(1+s^2+t^2)" --z "(s^2+t^2-1)/(1+s^2+t^2)" --method resultant --json
 expect_json "auto falls back on base points" 0 "
-j['method'] == 'groebner' and j['implicit'] == 'y^2*z-x^2' and j['stats']['resultant']['dixon_vanishes'] is True" \
+j['method'] in ('groebner', 'interpolation') and j['implicit'] == 'y^2*z-x^2' and
+('head start' in j['stats']['route'] or j['stats']['resultant']['dixon_vanishes'] is True)" \
   implicitize --x "s*t" --y t --z "s^2" --json
+expect_json "the modular groebner route" 0 "
+j['method'] == 'groebner' and j['implicit'] == 'y^2*z-x^2' and j['stats']['modular']['primes'] >= 2" \
+  implicitize --x "s*t" --y t --z "s^2" --method groebner --modular --json
+expect_json "groebner --modular" 0 "
+j['method'] == 'modular' and j['basis'] == ['x-y', 'y^2-1/2'] and j['stats']['modular']['proven'] is True" \
+  groebner --modular --json "x^2+y^2-1" "x-y"
+expect_status "groebner --method bogus" 2 "method" groebner --method bogus "x"
 expect_status "resultant needs two parameters" 3 "method_not_applicable" implicitize --x s --y t --z u --method resultant
 if [[ -n $HARD ]]; then
   expect_json "auto takes the resultant on tp_22" 0 "

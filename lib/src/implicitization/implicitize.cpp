@@ -35,6 +35,8 @@ ImplicitizationMethod parse_implicitization_method(const std::string& name) {
 
 namespace {
 
+using Clock = std::chrono::steady_clock;
+
 // A name for the saturation variable that no parameter uses.
 std::string fresh_name(const Ring& params) {
   std::string name = "w";
@@ -42,8 +44,14 @@ std::string fresh_name(const Ring& params) {
   return name;
 }
 
-// The generator of the elimination ideal (Theorem 1.9 with the lcm).
-ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeOptions& options) {
+// The ideal of Theorem 1.9 (with the lcm of the denominators) in [w?, params, x, y, z]
+// and the variables to eliminate.
+struct ImplicitizationIdeal {
+  std::vector<Polynomial> generators;
+  std::vector<std::string> eliminated;
+};
+
+ImplicitizationIdeal implicitization_ideal(const Parametrization& p) {
   const Ring& params = *p.parameter_ring;
   const std::size_t k = params.num_variables();
 
@@ -78,8 +86,14 @@ ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeOptions
     generators.push_back(Polynomial::constant(ring, Rational(1)) -
                          l.map_to(ring, param_map) * Polynomial::variable(ring, 0));
   }
+  return {std::move(generators), std::move(eliminated)};
+}
 
-  const EliminationResult elimination = eliminate(generators, eliminated, options.groebner);
+// The generator of the elimination ideal (Theorem 1.9 with the lcm).
+ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeOptions& options) {
+  const ImplicitizationIdeal ideal = implicitization_ideal(p);
+  const std::size_t n = p.coordinates.size();
+  const EliminationResult elimination = eliminate(ideal.generators, ideal.eliminated, options.groebner);
   const auto& gens = elimination.elimination;
   if (gens.size() != 1 || gens.front().is_constant()) {
     std::vector<std::string> printed;
@@ -103,7 +117,38 @@ ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeOptions
   return result;
 }
 
-using Clock = std::chrono::steady_clock;
+// The Gröbner route modulo primes: the elimination ideal's basis lifted alone, and
+// the one generator it should have proven to be the implicit equation (exact
+// substitution, and check_implicit_equation's minimality: a one-dimensional kernel of
+// the monomials of its degree at points of the image, and a hypersurface image;
+// interpolation.hpp has the argument). nullopt where the lifted ideal has no single
+// generator or the proof does not go through: the caller then runs Buchberger over ℚ.
+std::optional<ImplicitizeResult> by_modular_groebner(const Parametrization& p, const ImplicitizeOptions& options) {
+  const ImplicitizationIdeal ideal = implicitization_ideal(p);
+  const std::size_t n = p.coordinates.size();
+  ModularGroebnerParams params;
+  params.buchberger = options.groebner;
+  params.prove = false;
+  params.lift_only_free_of_first = ideal.eliminated.size();
+  ModularGroebnerStats stats;
+  const EliminationResult elimination =
+      eliminate_modular(ideal.generators, ideal.eliminated, params, MonomialOrder::grevlex(), &stats);
+  if (elimination.elimination.size() != 1 || elimination.elimination.front().is_constant()) return std::nullopt;
+  ImplicitizeResult result;
+  const std::size_t identity[3] = {0, 1, 2};
+  result.implicit = elimination.elimination.front().map_to(implicit_ring(n), std::span(identity, n)).primitive_part();
+  const auto verify_start = Clock::now();
+  InterpolationOptions check;
+  check.budget = options.groebner.budget;
+  const ImplicitEquationCheck proof = check_implicit_equation(result.implicit, p, check);
+  result.verify_ms = std::chrono::duration<double, std::milli>(Clock::now() - verify_start).count();
+  if (!proof.vanishes || !proof.minimal) return std::nullopt;
+  result.verified = true;
+  result.method = "groebner";
+  result.stats = elimination.groebner.stats;
+  result.modular_stats = stats;
+  return result;
+}
 
 // Verifies `result.implicit` by substitution (unless the route did) and fills the
 // fields every route shares.
@@ -208,6 +253,12 @@ std::optional<ImplicitizeResult> groebner_within(const Parametrization& p, const
 // included); the lower end is taken so that the head start stays short.
 constexpr double kSecondsPerOperation = 2e-9;
 
+// Buchberger's head start before interpolation when there is no resultant: the
+// sparse public surfaces finish within it (whitney_umbrella 0.19 ms, bicubic_graph
+// 0.36 ms, cone_rational 0.42 ms), the denser ones do not (torus 3.4 ms, Steiner
+// 2.7 ms; interpolation answers them in 0.76 and 0.90 ms).
+constexpr double kBaseHeadStartSeconds = 0.0005;
+
 }  // namespace
 
 ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions& options) {
@@ -272,6 +323,13 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
     // of magnitude on dense ones (tri_cubic: 40 ms against more than 60 s), and which
     // is which shows only by running: Buchberger gets a head start of half the
     // predicted determinant time (at least 2 ms), then the resultant runs.
+    // Before the probe (1–3 ms on a dense triangular patch: bicubic_graph's 153×153
+    // Macaulay matrix), Buchberger's short head start answers the sparse ideals.
+    if (auto quick = groebner_within(p, options, kBaseHeadStartSeconds)) {
+      quick->route = "groebner: Buchberger finished within its head start, before the resultant's probe";
+      finish(*quick, p, budget, start);
+      return *quick;
+    }
     const std::vector<Polynomial> f = common_denominator_form(p);
     const AuxiliaryResultantPlan plan =
         plan_auxiliary_resultant({f[0], f[1], f[2], f[3]}, resultant_options(budget, 1));
@@ -296,6 +354,58 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
         finish(*result, p, budget, start);
         return *result;
       }
+    }
+  }
+  if (options.method == ImplicitizationMethod::automatic) {
+    // No resultant (base points, or another number of parameters). The rule of
+    // docs/algorithms.md, measured on the public surfaces: sparse ideals are
+    // Buchberger's (whitney_umbrella 0.19 ms, bicubic_graph 0.36 ms, against 0.41 and
+    // 2.1 ms by interpolation), denser ones interpolation's (the torus 0.76 ms and
+    // Steiner's surface 0.90 ms, against 3.4 and 2.7 ms), and only running tells
+    // them apart: Buchberger gets a head start of kBaseHeadStartSeconds, then
+    // interpolation runs; where its matrix would be too large, the modular
+    // elimination; and Buchberger over ℚ with the whole budget where neither proves
+    // an answer (it also lists the generators of an ideal that is not principal).
+    const std::string why = resultant_applies ? "the auxiliary resultant vanishes (base points)"
+                                              : "the resultant needs one parameter fewer than coordinates";
+    // (With two parameters Buchberger already had its head start before the probe.)
+    if (!(resultant_applies && coordinates == 3)) {
+      if (auto quick = groebner_within(p, options, kBaseHeadStartSeconds)) {
+        quick->route = "groebner: " + why + "; Buchberger finished within its head start";
+        finish(*quick, p, budget, start);
+        return *quick;
+      }
+    }
+    try {
+      InterpolationOptions interpolation;
+      interpolation.budget = budget;
+      InterpolationResult answer = implicitize_by_interpolation(p, interpolation);
+      ImplicitizeResult result;
+      result.implicit = std::move(answer.implicit);
+      result.method = "interpolation";
+      result.verified = true;
+      result.verify_ms = answer.stats.verify_ms;
+      result.interpolation_stats = answer.stats;
+      result.resultant_stats = probe;
+      result.route = "interpolation: " + why + "; Buchberger did not finish within its head start";
+      finish(result, p, budget, start);
+      return result;
+    } catch (const LimitExceeded& e) {
+      if (e.limit() != Limit::size) throw;  // time and cancellation are the caller's
+      if (auto modular = by_modular_groebner(p, options)) {
+        modular->resultant_stats = probe;
+        modular->route = "groebner (modular): " + why + "; the interpolation matrix would be too large";
+        finish(*modular, p, budget, start);
+        return *modular;
+      }
+    } catch (const NoSingleEquation&) {
+      // Interpolation proves that there is no single equation but lists no
+      // generators: Buchberger below does.
+    }
+  } else if (options.modular_groebner) {
+    if (auto modular = by_modular_groebner(p, options)) {
+      finish(*modular, p, budget, start);
+      return *modular;
     }
   }
   ImplicitizeResult result = by_groebner(p, options);

@@ -18,6 +18,7 @@ ImplicitizeResult answer_implicitize_request(const ImplicitizeRequest& request, 
   if (request.z) coordinates.push_back(*request.z);
   const Parametrization parametrization = parse_parametrization(coordinates, request.parameters, params.budget);
   options.groebner = std::move(params);
+  options.modular_groebner = request.modular;
   return implicitize(parametrization, options);
 }
 

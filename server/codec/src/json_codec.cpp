@@ -297,8 +297,12 @@ ImplicitizeRequest decode_implicitize_request(std::string_view body, const JsonL
   if (const auto* v = reader.take("z")) request.z = read_string(*v, "z");
   if (const auto* v = reader.take("parameters")) request.parameters = read_strings(*v, "parameters");
   if (const auto* v = reader.take("method")) request.method = read_string(*v, "method");
+  if (const auto* v = reader.take("modular")) {
+    if (!v->IsBool()) throw wrong_type("modular", "true or false");
+    request.modular = v->GetBool();
+  }
   if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = read_timeout_seconds(*v);
-  reader.finish("x, y, z, parameters, method, timeout_ms");
+  reader.finish("x, y, z, parameters, method, modular, timeout_ms");
   return request;
 }
 
@@ -553,6 +557,10 @@ std::string encode_implicitize_response(const ImplicitizeResult& result) {
   if (result.interpolation_stats) {
     write_key(w, "interpolation");
     write_interpolation_stats(w, *result.interpolation_stats);
+  }
+  if (result.modular_stats) {
+    write_key(w, "modular");
+    write_modular_stats(w, *result.modular_stats);
   }
   w.EndObject();
   write_key(w, "reproduce");

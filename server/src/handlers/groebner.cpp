@@ -11,6 +11,7 @@ std::string canonical_key(const GroebnerRequest& request) {
   append_key_field(key, request.order);
   append_key_list(key, request.weights);
   append_key_list(key, request.eliminate);
+  append_key_field(key, request.method);
   return key;
 }
 

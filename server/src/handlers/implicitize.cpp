@@ -14,6 +14,7 @@ std::string canonical_key(const ImplicitizeRequest& request) {
     key += '-';  // a plane curve: no field, distinct from every length-prefixed one
   }
   append_key_field(key, request.method);
+  key += request.modular ? 'm' : '-';
   append_key_list(key, request.parameters);
   return key;
 }

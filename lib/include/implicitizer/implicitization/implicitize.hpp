@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "implicitizer/groebner/buchberger.hpp"
+#include "implicitizer/groebner/modular_groebner.hpp"
 #include "implicitizer/implicitization/interpolation.hpp"
 #include "implicitizer/implicitization/parametrization.hpp"
 #include "implicitizer/resultant/auxiliary_resultant.hpp"
@@ -40,6 +41,12 @@ ImplicitizationMethod parse_implicitization_method(const std::string& name);
 struct ImplicitizeOptions {
   ImplicitizationMethod method = ImplicitizationMethod::automatic;
   BuchbergerParams groebner;  ///< includes the budget
+  /// The Gröbner route computes the elimination modulo primes (eliminate_modular,
+  /// lifting only the elimination ideal) and proves the equation it lifts by exact
+  /// substitution and check_implicit_equation's minimality; where that proof fails
+  /// (an image that is not a surface, an unlucky check prime) it falls back to
+  /// Buchberger over ℚ, which also gives the generators of a non-principal ideal.
+  bool modular_groebner = false;
 };
 
 /// The implicit equation and how it was found.
@@ -57,6 +64,9 @@ struct ImplicitizeResult {
   std::optional<AuxiliaryResultantStats> resultant_stats;
   /// Of the interpolation route (method interpolation only).
   std::optional<InterpolationStats> interpolation_stats;
+  /// Of the modular elimination (the Gröbner route with modular_groebner, or auto's
+  /// fallback where interpolation's matrix is too large).
+  std::optional<ModularGroebnerStats> modular_stats;
   /// l in Res_aux = c·f^l: the degree of the parametrization as a map onto its
   /// image (resultant route; 0 when unknown).
   std::int32_t map_degree = 0;
