@@ -54,7 +54,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: implicitizer-bench [--suite public|hard|all] [--only NAME,NAME...]\n"
-    "                          [--method auto|groebner|resultant|interpolation | --routes]\n"
+    "                          [--method auto|groebner|resultant|interpolation | --routes] [--modular]\n"
     "                          [--repeat N] [--repeat-below SECONDS] [--budget SECONDS] [--markdown]\n"
     "                          [--no-singular] [--singular PATH] [--surfaces DIR]\n"
     "\n"
@@ -62,7 +62,8 @@ constexpr const char* kUsage =
     "ideal, in the same run. --method picks our route (the column \"method\" shows the one\n"
     "taken); --routes instead times every route (groebner, resultant, interpolation, auto)\n"
     "on each surface beside Singular, with the ratios auto / Singular and\n"
-    "auto / min(groebner, resultant). Defaults: --suite all --method auto --repeat 5\n"
+    "auto / min(groebner, resultant). --modular runs the groebner route modulo primes\n"
+    "(ImplicitizeOptions::modular_groebner). Defaults: --suite all --method auto --repeat 5\n"
     "--repeat-below 1 --budget 60 --singular Singular --surfaces " IMPLICITIZER_BENCH_DIR "\n";
 
 /// The command line.
@@ -73,6 +74,7 @@ struct Config {
   ImplicitizationMethod method = ImplicitizationMethod::automatic;
   bool method_given = false;        ///< --method was on the command line
   bool routes = false;              ///< time every route instead (--routes)
+  bool modular = false;             ///< the Gröbner route modulo primes (--modular)
   int repeat = 5;                   ///< runs of a fast surface (median reported)
   double repeat_below_seconds = 1;  ///< a first run shorter than this is repeated
   double budget_seconds = 60;       ///< time limit of each run, ours and Singular's
@@ -142,6 +144,8 @@ Config parse_config(int argc, char** argv) {
       config.method_given = true;
     } else if (flag == "--routes") {
       config.routes = true;
+    } else if (flag == "--modular") {
+      config.modular = true;
     } else if (flag == "--repeat") {
       const double n = parse_number(flag, take_value());
       if (n != static_cast<int>(n)) throw UsageError("--repeat needs a whole number");
@@ -225,6 +229,7 @@ OurRun time_implicitize(const Parametrization& p, ImplicitizationMethod method, 
   for (int k = 0; k < config.repeat; ++k) {
     ImplicitizeOptions options;
     options.method = method;
+    options.modular_groebner = config.modular;
     options.groebner.budget = Budget::with_timeout(config.budget_seconds);
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = process_cpu_ms();
