@@ -15,6 +15,7 @@
 #include "buchberger_engine.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/groebner/reduced_basis.hpp"
+#include "implicitizer/modular/flint_handles.hpp"
 #include "implicitizer/modular/prime_sequence.hpp"
 #include "int_polynomial.hpp"
 #include "mod_polynomial.hpp"
@@ -38,25 +39,6 @@ constexpr std::size_t kMaxPrimes = 2000;
 
 // A prime is worth a thread of its own when it takes longer than this.
 constexpr double kThreadWorthMs = 20;
-
-class Fmpz {
- public:
-  Fmpz() { fmpz_init(v_); }
-  ~Fmpz() { fmpz_clear(v_); }
-  Fmpz(const Fmpz& other) {
-    fmpz_init(v_);
-    fmpz_set(v_, other.v_);
-  }
-  Fmpz& operator=(const Fmpz& other) {
-    fmpz_set(v_, other.v_);
-    return *this;
-  }
-  fmpz* get() { return v_; }
-  const fmpz* get() const { return v_; }
-
- private:
-  fmpz_t v_;
-};
 
 // ---------------------------------------------------------------- the runs modulo p
 

@@ -117,6 +117,20 @@ ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeOptions
   return result;
 }
 
+// The interpolation route (interpolation.hpp), which verifies what it returns.
+ImplicitizeResult by_interpolation(const Parametrization& p, const Budget& budget) {
+  InterpolationOptions interpolation;
+  interpolation.budget = budget;
+  InterpolationResult answer = implicitize_by_interpolation(p, interpolation);
+  ImplicitizeResult result;
+  result.implicit = std::move(answer.implicit);
+  result.method = "interpolation";
+  result.verified = true;  // by substitution inside the route, which returns nothing else
+  result.verify_ms = answer.stats.verify_ms;
+  result.interpolation_stats = answer.stats;
+  return result;
+}
+
 // The Gröbner route modulo primes: the elimination ideal's basis lifted alone, and
 // the one generator it should have proven to be the implicit equation (exact
 // substitution, and check_implicit_equation's minimality: a one-dimensional kernel of
@@ -271,15 +285,7 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
   const bool resultant_applies = parameters + 1 == coordinates;
   std::optional<AuxiliaryResultantStats> probe;
   if (options.method == ImplicitizationMethod::interpolation) {
-    InterpolationOptions interpolation;
-    interpolation.budget = budget;
-    InterpolationResult answer = implicitize_by_interpolation(p, interpolation);
-    ImplicitizeResult result;
-    result.implicit = std::move(answer.implicit);
-    result.method = "interpolation";
-    result.verified = true;  // by substitution inside the route, which returns nothing else
-    result.verify_ms = answer.stats.verify_ms;
-    result.interpolation_stats = answer.stats;
+    ImplicitizeResult result = by_interpolation(p, budget);
     finish(result, p, budget, start);
     return result;
   }
@@ -377,15 +383,7 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
       }
     }
     try {
-      InterpolationOptions interpolation;
-      interpolation.budget = budget;
-      InterpolationResult answer = implicitize_by_interpolation(p, interpolation);
-      ImplicitizeResult result;
-      result.implicit = std::move(answer.implicit);
-      result.method = "interpolation";
-      result.verified = true;
-      result.verify_ms = answer.stats.verify_ms;
-      result.interpolation_stats = answer.stats;
+      ImplicitizeResult result = by_interpolation(p, budget);
       result.resultant_stats = probe;
       result.route = "interpolation: " + why + "; Buchberger did not finish within its head start";
       finish(result, p, budget, start);

@@ -21,6 +21,7 @@
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 #include "implicitizer/implicitization/verify.hpp"
+#include "implicitizer/modular/flint_handles.hpp"
 
 namespace implicitizer {
 
@@ -148,21 +149,6 @@ class ModularPolynomial {
   std::vector<std::int32_t> exponents_;
 };
 
-// RAII for FLINT's nmod_mat.
-class ModMatrix {
- public:
-  ModMatrix(std::size_t rows, std::size_t columns, mp_limb_t p) {
-    nmod_mat_init(m_, static_cast<slong>(rows), static_cast<slong>(columns), p);
-  }
-  ~ModMatrix() { nmod_mat_clear(m_); }
-  ModMatrix(const ModMatrix&) = delete;
-  ModMatrix& operator=(const ModMatrix&) = delete;
-  nmod_mat_struct* get() { return m_; }
-
- private:
-  nmod_mat_t m_;
-};
-
 // The parametrization modulo p: the image ξ(a)/ω(a) of a parameter point a, and
 // optionally the Jacobian there.
 class ModularMap {
@@ -197,7 +183,7 @@ class ModularMap {
   std::optional<std::size_t> jacobian_rank(const std::vector<mp_limb_t>& a) {
     if (!evaluate_forms(a)) return std::nullopt;
     if (k_ == 0) return 0;
-    ModMatrix j(n_, k_, mod_.n);
+    NmodMatrix j(n_, k_, mod_.n);
     for (std::size_t i = 0; i < n_; ++i) {
       for (std::size_t v = 0; v < k_; ++v) {
         const mp_limb_t d_xi = partials_[(i + 1) * k_ + v].evaluate(*table_);
@@ -312,7 +298,7 @@ KernelImage kernel_modulo(const MapForms& forms, const MonomialBasis& basis, mp_
   const std::size_t n = forms.coordinates;
   const std::size_t columns = basis.size();
   out.rows = columns + kExtraRows;
-  ModMatrix matrix(out.rows, columns, p);
+  NmodMatrix matrix(out.rows, columns, p);
 
   ResidueStream stream(seed ^ (p * 0x9e3779b97f4a7c15ULL) ^ static_cast<std::uint64_t>(basis.degree));
   std::set<std::vector<mp_limb_t>> used;

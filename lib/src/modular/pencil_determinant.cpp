@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "implicitizer/modular/flint_handles.hpp"
+
 namespace implicitizer {
 
 MatrixPencil::MatrixPencil(std::size_t size, std::size_t num_variables)
@@ -34,24 +36,15 @@ std::size_t MatrixPencil::determinant_coefficient_bits() const {
 
 namespace {
 
-// RAII for FLINT's nmod_mat.
-class ModMatrix {
- public:
-  ModMatrix(std::size_t n, mp_limb_t p) { nmod_mat_init(m_, static_cast<slong>(n), static_cast<slong>(n), p); }
-  ~ModMatrix() { nmod_mat_clear(m_); }
-  ModMatrix(const ModMatrix&) = delete;
-  ModMatrix& operator=(const ModMatrix&) = delete;
-  nmod_mat_struct* get() { return m_; }
-
- private:
-  nmod_mat_t m_;
-};
-
 // The pencil reduced modulo one prime, evaluated at points of a grid.
 class ModularPencil {
  public:
   ModularPencil(const MatrixPencil& pencil, const std::vector<std::size_t>& minor, mp_limb_t p)
-      : n_(pencil.size()), k_(pencil.num_variables()), minor_(minor), matrix_(n_, p), divisor_(minor.size(), p) {
+      : n_(pencil.size()),
+        k_(pencil.num_variables()),
+        minor_(minor),
+        matrix_(n_, n_, p),
+        divisor_(minor.size(), minor.size(), p) {
     nmod_init(&mod_, p);
     reduced_.resize((k_ + 1) * n_ * n_);
     fmpz_t c;
@@ -107,8 +100,8 @@ class ModularPencil {
   nmod_t mod_;
   std::vector<mp_limb_t> reduced_;
   std::vector<std::size_t> active_parts_;
-  ModMatrix matrix_;
-  ModMatrix divisor_;
+  NmodMatrix matrix_;
+  NmodMatrix divisor_;
 };
 
 std::size_t power(std::size_t base, std::size_t exponent) {

@@ -1,6 +1,6 @@
 #pragma once
-// Private to lib/src/render: RAII for FLINT's fmpz and fmpz_poly, and dyadic
-// rationals m·2^e (every double is one; sums and products stay dyadic), shared by
+// Private to lib/src/render: FLINT's fmpz and fmpz_poly owners (the shared ones of
+// implicitizer/modular/flint_handles.hpp), and dyadic rationals m·2^e (every double is one; sums and products stay dyadic), shared by
 // ray_polynomial.cpp (exact expansion) and root_isolation.cpp (exact isolation).
 
 #include <flint/fmpz.h>
@@ -9,39 +9,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "implicitizer/modular/flint_handles.hpp"
+
 namespace implicitizer::render_detail {
 
-class Fmpz {
- public:
-  Fmpz() { fmpz_init(v_); }
-  ~Fmpz() { fmpz_clear(v_); }
-  Fmpz(const Fmpz& other) {
-    fmpz_init(v_);
-    fmpz_set(v_, other.v_);
-  }
-  Fmpz& operator=(const Fmpz& other) {
-    fmpz_set(v_, other.v_);
-    return *this;
-  }
-  fmpz* get() { return v_; }
-  const fmpz* get() const { return v_; }
-
- private:
-  fmpz_t v_;
-};
-
-class FmpzPoly {
- public:
-  FmpzPoly() { fmpz_poly_init(p_); }
-  ~FmpzPoly() { fmpz_poly_clear(p_); }
-  FmpzPoly(const FmpzPoly&) = delete;
-  FmpzPoly& operator=(const FmpzPoly&) = delete;
-  fmpz_poly_struct* get() { return p_; }
-  const fmpz_poly_struct* get() const { return p_; }
-
- private:
-  fmpz_poly_t p_;
-};
+using implicitizer::Fmpz;
+using implicitizer::FmpzPoly;
 
 // mantissa·2^exponent, exactly.
 struct Dyadic {
