@@ -168,8 +168,9 @@ options:
   -o, --output FILE     the PNG to write (required)
   --method M            sphere (default): sphere tracing; enhanced: over-relaxed
                         sphere tracing, as safe as sphere; newton, forward_newton:
-                        Newton marching, not safe; exact: the first root of the
-                        polynomial on each ray (implicit and parametric surfaces only)
+                        Newton marching with checked steps, as safe as sphere; exact:
+                        the first root of the polynomial on each ray (implicit and
+                        parametric surfaces only)
   --mode fast|safe      the distance function: fast F/|grad F| (default) or the safe
                         bound (sphere tracing never crosses the surface)
   --size WxH            image size in pixels (default 256x256)
