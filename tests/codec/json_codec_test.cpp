@@ -110,8 +110,20 @@ TEST(AnswerGroebnerRequest, ReducedBasisAndElimination) {
   r.order = "lex";
   const GroebnerAnswer a = answer_groebner_request(r);
   const std::string json = encode_groebner_response(a);
-  EXPECT_EQ(json.rfind(R"({"basis":["y^4+y","x-y^2"],"order":"lex","stats":{"pairs":)", 0), 0u) << json;
+  EXPECT_EQ(json.rfind(R"({"basis":["y^4+y","x-y^2"],"order":"lex","method":"buchberger","stats":{"pairs":)", 0), 0u)
+      << json;
   EXPECT_EQ(json.find("elimination_ideal"), std::string::npos);
+  EXPECT_EQ(json.find(R"("modular":{)"), std::string::npos) << json;
+  // The same basis modulo primes, proven, with the modular counters.
+  GroebnerRequest m = r;
+  m.method = "modular";
+  const std::string modular = encode_groebner_response(answer_groebner_request(m));
+  EXPECT_EQ(modular.rfind(R"({"basis":["y^4+y","x-y^2"],"order":"lex","method":"modular","stats":{"pairs":)", 0), 0u)
+      << modular;
+  EXPECT_NE(modular.find(R"("modular":{"primes":)"), std::string::npos) << modular;
+  EXPECT_NE(modular.find(R"("proven":true)"), std::string::npos) << modular;
+  m.method = "magic";
+  EXPECT_EQ(input_error_of([&] { answer_groebner_request(m); }).field(), "method");
 
   GroebnerRequest e;
   e.polynomials = {"x-s-t", "y-s*t", "z-s^2"};
@@ -236,19 +248,22 @@ TEST(AnswerImplicitizeRequest, EncodesTheContractShape) {
   r.y = "s";
   r.z = "t";
   const std::string json = encode_implicitize_response(answer_implicitize_request(r));
-  // The plane: its 3x3 Macaulay matrix is probed, then Buchberger answers within
-  // its head start (docs/algorithms.md), and the stats say so.
+  // The plane: Buchberger answers within its head start, before the resultant's
+  // probe (docs/algorithms.md), and the stats say so.
   EXPECT_EQ(json.rfind(R"({"implicit":"x-y-z","degree":1,"variables":["x","y","z"],"method":"groebner",)"
                        R"("verified":true,"elapsed_ms":)",
                        0),
             0u)
       << json;
-  EXPECT_NE(json.find(R"("route":"groebner: finished within its head start)"), std::string::npos) << json;
-  EXPECT_NE(json.find(R"("resultant":{"dixon_vanishes":true,"macaulay_vanishes":false,"formulation":"macaulay",)"
-                      R"("matrix_size":3,"extraneous_size":0,"degree_bound":1,"construction_ms":)"),
-            std::string::npos)
-      << json;
+  EXPECT_NE(json.find(R"("route":"groebner: Buchberger finished within its head start)"), std::string::npos) << json;
   EXPECT_NE(json.find(R"("reproduce":{"singular":")"), std::string::npos);
+  // By the resultant: its 3x3 Macaulay matrix, with the probe's flags.
+  r.method = "resultant";
+  const std::string resultant = encode_implicitize_response(answer_implicitize_request(r));
+  EXPECT_NE(resultant.find(R"("resultant":{"dixon_vanishes":true,"macaulay_vanishes":false,"formulation":"macaulay",)"
+                           R"("matrix_size":3,"extraneous_size":0,"degree_bound":1,"map_degree":1,"primes":)"),
+            std::string::npos)
+      << resultant;
   r.method = "groebner";
   const std::string groebner = encode_implicitize_response(answer_implicitize_request(r));
   EXPECT_NE(groebner.find(R"("method":"groebner")"), std::string::npos);
