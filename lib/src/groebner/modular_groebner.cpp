@@ -241,21 +241,18 @@ class BasisLift {
   std::size_t first_seen_ = 0;
 };
 
-// Whether the candidate, reduced modulo `run.prime`, is `run.basis`.
-bool agrees_modulo(const std::vector<Polynomial>& candidate, const PrimeRun& run, const Ring& ring) {
+// Whether the candidate, as primitive integer polynomials, reduced modulo
+// `run.prime` is `run.basis`.
+bool agrees_modulo(const std::vector<IntPolynomial>& candidate, const PrimeRun& run, const Ring& ring) {
   if (candidate.size() != run.basis.size()) return false;
-  const std::uint64_t p = run.prime;
+  const detail::ModularArithmetic arithmetic(ring, run.prime);
   for (std::size_t e = 0; e < candidate.size(); ++e) {
-    const IntPolynomial c = detail::to_int_polynomial(candidate[e]);
-    const std::uint64_t lead = mpz_fdiv_ui(c.coefficients.front().get_mpz_t(), p);
-    if (lead == 0) return false;  // p divides a denominator of the candidate
-    const detail::ModularArithmetic arithmetic(ring, p);
+    const IntPolynomial& c = candidate[e];
+    // The lead is D for a monic element D·g: p divides a denominator of the candidate.
+    if (mpz_fdiv_ui(c.coefficients.front().get_mpz_t(), run.prime) == 0) return false;
     const ModPolynomial reduced = arithmetic.reduce_coefficients(c);
     const ModPolynomial& g = run.basis[e];
-    if (reduced.coefficients != g.coefficients) return false;
-    if (!std::equal(reduced.monomials.begin(), reduced.monomials.end(), g.monomials.begin(), g.monomials.end())) {
-      return false;
-    }
+    if (reduced.coefficients != g.coefficients || reduced.monomials != g.monomials) return false;
   }
   return true;
 }
@@ -456,9 +453,11 @@ class ModularDriver {
   // Whether every prime of `batch` whose basis has the candidate's leading monomials
   // agrees with the candidate, and at least one does.
   bool confirms(const std::vector<Polynomial>& candidate, const std::vector<PrimeRun>& batch) const {
+    std::vector<IntPolynomial> integers;
+    for (const auto& g : candidate) integers.push_back(detail::to_int_polynomial(g));
     std::size_t agreeing = 0;
     for (const PrimeRun& run : batch) {
-      if (agrees_modulo(candidate, run, *ring_)) {
+      if (agrees_modulo(integers, run, *ring_)) {
         ++agreeing;
         continue;
       }
