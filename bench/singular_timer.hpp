@@ -3,7 +3,7 @@
 /// Times Singular's `eliminate` on the ideal implicitize() eliminates from, so that a
 /// benchmark compares the two in the same run on the same machine.
 ///
-/// The script is the one ImplicitizeResult::singular_script holds (reproduce.hpp:
+/// The script is the one every answer carries as reproduce.singular (reproduce.hpp:
 /// the common-denominator formulation ⟨q_i·X_i − p_i, 1 − L·w⟩, L the lcm of the
 /// denominators), with its last lines replaced by a loop that times `eliminate`
 /// alone with Singular's wall-clock `rtimer` (and its CPU `timer`): process start-up, parsing the ring and

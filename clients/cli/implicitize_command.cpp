@@ -77,11 +77,11 @@ int run_implicitize_command(std::span<const std::string> args) {
   if (request.z) report.field_texts["z"] = *request.z;
 
   return run_reporting_errors(report, [&] {
-    const ImplicitizeResult result = answer_implicitize_request(request, std::move(params));
+    const ImplicitizeAnswer answer = answer_implicitize_request(request, std::move(params));
     if (report.json) {
-      std::cout << encode_implicitize_response(result) << '\n';
+      std::cout << encode_implicitize_response(answer) << '\n';
     } else {
-      std::cout << to_string(result.implicit) << '\n';
+      std::cout << to_string(answer.result.implicit) << '\n';
     }
   });
 }

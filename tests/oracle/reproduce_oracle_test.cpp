@@ -1,5 +1,5 @@
 // Oracle: the reproduce scripts that implicitize() hands to the user
-// (ImplicitizeResult::singular_script and ::macaulay2_script) run unchanged in real
+// (reproduce_scripts(), the answer's "reproduce") run unchanged in real
 // Singular and Macaulay2, print exactly one line, the implicit equation, and that
 // equation is ours up to a rational factor. Covers polynomial and rational surfaces,
 // rational coefficients (enneper) and parameters the scripts must rename because the
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "implicitizer/implicitization/implicitize.hpp"
+#include "implicitizer/implicitization/reproduce.hpp"
 #include "implicitizer/polynomial/parser.hpp"
 #include "oracle/oracle_support.hpp"
 
@@ -52,7 +53,13 @@ void expect_prints_our_equation(const testing::ScriptRun& run, const std::string
 
 class ReproduceOracle : public ::testing::TestWithParam<testing::Surface> {
  protected:
-  ImplicitizeResult implicitize_surface() const {
+  // The answer as the codec writes it: the result and its reproduce scripts.
+  struct Answer {
+    ImplicitizeResult result;
+    ReproduceScripts scripts;
+  };
+
+  Answer implicitize_surface() const {
     const testing::Surface& s = GetParam();
     ImplicitizeOptions options;
     options.groebner.budget.set_timeout(30);
@@ -63,11 +70,12 @@ class ReproduceOracle : public ::testing::TestWithParam<testing::Surface> {
     if (s.degree > 0) {
       EXPECT_EQ(result.degree, s.degree);
     }
+    ReproduceScripts scripts = reproduce_scripts(p);
     if (s.name == "reserved_parameter_names") {
-      EXPECT_NE(result.singular_script.find("(w,t1,t2,x,y,z)"), std::string::npos) << result.singular_script;
-      EXPECT_NE(result.macaulay2_script.find("[w,t1,t2,x,y,z]"), std::string::npos) << result.macaulay2_script;
+      EXPECT_NE(scripts.singular.find("(w,t1,t2,x,y,z)"), std::string::npos) << scripts.singular;
+      EXPECT_NE(scripts.macaulay2.find("[w,t1,t2,x,y,z]"), std::string::npos) << scripts.macaulay2;
     }
-    return result;
+    return {result, std::move(scripts)};
   }
 };
 
@@ -75,16 +83,18 @@ TEST_P(ReproduceOracle, SingularScriptPrintsOurEquation) {
   if (!testing::is_runnable(testing::kSingular)) {
     GTEST_SKIP() << "Singular not found (SINGULAR_EXECUTABLE=\"" << testing::kSingular << "\")";
   }
-  const ImplicitizeResult result = implicitize_surface();
-  expect_prints_our_equation(testing::run_singular(result.singular_script), result.singular_script, result.implicit);
+  const Answer answer = implicitize_surface();
+  expect_prints_our_equation(testing::run_singular(answer.scripts.singular), answer.scripts.singular,
+                             answer.result.implicit);
 }
 
 TEST_P(ReproduceOracle, Macaulay2ScriptPrintsOurEquation) {
   if (!testing::is_runnable(testing::kMacaulay2)) {
     GTEST_SKIP() << "Macaulay2 not found (MACAULAY2_EXECUTABLE=\"" << testing::kMacaulay2 << "\")";
   }
-  const ImplicitizeResult result = implicitize_surface();
-  expect_prints_our_equation(testing::run_macaulay2(result.macaulay2_script), result.macaulay2_script, result.implicit);
+  const Answer answer = implicitize_surface();
+  expect_prints_our_equation(testing::run_macaulay2(answer.scripts.macaulay2), answer.scripts.macaulay2,
+                             answer.result.implicit);
 }
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, ReproduceOracle, ::testing::ValuesIn(reproduce_surfaces()),

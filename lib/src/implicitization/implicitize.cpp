@@ -177,8 +177,6 @@ void finish(ImplicitizeResult& result, const Parametrization& p, const Budget& b
                              " does not vanish on the parametrization");
     }
   }
-  result.singular_script = singular_script(p);
-  result.macaulay2_script = macaulay2_script(p);
   result.elapsed_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 

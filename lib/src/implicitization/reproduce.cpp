@@ -78,10 +78,7 @@ std::string comment_of(const Parametrization& p) {
   return join(parts, ", ");
 }
 
-}  // namespace
-
-std::string singular_script(const Parametrization& p) {
-  const ScriptIdeal ideal = script_ideal(p);
+std::string singular_script_of(const Parametrization& p, const ScriptIdeal& ideal) {
   std::vector<std::string> vars = ideal.eliminated;
   for (const auto& v : coordinate_names(p.coordinates.size())) vars.push_back(v);
   std::string product = join(ideal.eliminated, "*");
@@ -103,8 +100,7 @@ std::string singular_script(const Parametrization& p) {
          "quit;\n";
 }
 
-std::string macaulay2_script(const Parametrization& p) {
-  const ScriptIdeal ideal = script_ideal(p);
+std::string macaulay2_script_of(const Parametrization& p, const ScriptIdeal& ideal) {
   std::vector<std::string> vars = ideal.eliminated;
   for (const auto& v : coordinate_names(p.coordinates.size())) vars.push_back(v);
   return "-- implicitizer: the implicit equation of " + comment_of(p) +
@@ -120,6 +116,17 @@ std::string macaulay2_script(const Parametrization& p) {
          "}, I);\n"
          "scan(flatten entries gens J, g -> print toString g);\n"
          "exit 0\n";
+}
+
+}  // namespace
+
+std::string singular_script(const Parametrization& p) { return singular_script_of(p, script_ideal(p)); }
+
+std::string macaulay2_script(const Parametrization& p) { return macaulay2_script_of(p, script_ideal(p)); }
+
+ReproduceScripts reproduce_scripts(const Parametrization& p) {
+  const ScriptIdeal ideal = script_ideal(p);
+  return {singular_script_of(p, ideal), macaulay2_script_of(p, ideal)};
 }
 
 }  // namespace implicitizer

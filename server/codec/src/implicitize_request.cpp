@@ -5,7 +5,7 @@
 
 namespace implicitizer {
 
-ImplicitizeResult answer_implicitize_request(const ImplicitizeRequest& request, BuchbergerParams params) {
+ImplicitizeAnswer answer_implicitize_request(const ImplicitizeRequest& request, BuchbergerParams params) {
   ImplicitizeOptions options;
   try {
     options.method = parse_implicitization_method(request.method);
@@ -19,7 +19,8 @@ ImplicitizeResult answer_implicitize_request(const ImplicitizeRequest& request, 
   const Parametrization parametrization = parse_parametrization(coordinates, request.parameters, params.budget);
   options.groebner = std::move(params);
   options.modular_groebner = request.modular;
-  return implicitize(parametrization, options);
+  ImplicitizeResult result = implicitize(parametrization, options);
+  return {std::move(result), reproduce_scripts(parametrization)};
 }
 
 }  // namespace implicitizer

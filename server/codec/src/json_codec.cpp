@@ -522,7 +522,8 @@ std::string encode_render_response(const RenderAnswer& answer, bool with_png) {
   return finish(buffer);
 }
 
-std::string encode_implicitize_response(const ImplicitizeResult& result) {
+std::string encode_implicitize_response(const ImplicitizeAnswer& answer) {
+  const ImplicitizeResult& result = answer.result;
   rapidjson::StringBuffer buffer;
   Writer w(buffer);
   configure(w);
@@ -566,9 +567,9 @@ std::string encode_implicitize_response(const ImplicitizeResult& result) {
   write_key(w, "reproduce");
   w.StartObject();
   write_key(w, "singular");
-  write_string(w, result.singular_script);
+  write_string(w, answer.reproduce.singular);
   write_key(w, "macaulay2");
-  write_string(w, result.macaulay2_script);
+  write_string(w, answer.reproduce.macaulay2);
   w.EndObject();
   w.EndObject();
   return finish(buffer);

@@ -11,6 +11,7 @@
 
 #include "implicitizer/groebner/buchberger.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
+#include "implicitizer/implicitization/reproduce.hpp"
 
 namespace implicitizer {
 
@@ -30,13 +31,20 @@ struct ImplicitizeRequest {
   std::optional<double> timeout_seconds;
 };
 
+/// What the contract returns for a request: the library's result, and the scripts
+/// that reproduce it in Singular and Macaulay2 (the answer's "reproduce").
+struct ImplicitizeAnswer {
+  ImplicitizeResult result;
+  ReproduceScripts reproduce;
+};
+
 /// Answers `request`: parses the method (InputError `unknown_method`, field
 /// "method"), then the parametrization (InputError with field "x", "y", "z" or
 /// "parameters"), then implicitizes with `params` (strategy, criteria, size limit,
 /// cancellation). The request's timeout, when present, replaces the deadline of
 /// `params.budget` and starts counting now. Throws what implicitize() throws:
 /// NoSingleEquation, LimitExceeded.
-ImplicitizeResult answer_implicitize_request(const ImplicitizeRequest& request,
+ImplicitizeAnswer answer_implicitize_request(const ImplicitizeRequest& request,
                                              BuchbergerParams params = BuchbergerParams());
 
 }  // namespace implicitizer

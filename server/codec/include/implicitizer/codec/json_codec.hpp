@@ -78,7 +78,7 @@ std::string encode_render_response(const RenderAnswer& answer, bool with_png);
 /// {"pairs", "product_criterion", "chain_criterion", "reductions", "zero_reductions",
 /// "reduction_steps", "max_degree", "basis_size", "groebner_ms", "verify_ms"},
 /// "reproduce": {"singular", "macaulay2"}}`.
-std::string encode_implicitize_response(const ImplicitizeResult& result);
+std::string encode_implicitize_response(const ImplicitizeAnswer& answer);
 
 /// `{"basis", "order", "stats": {"pairs", "product_criterion", "chain_criterion",
 /// "reductions", "zero_reductions", "reduction_steps", "max_degree", "basis_size",
