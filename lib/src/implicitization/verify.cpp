@@ -69,12 +69,15 @@ Integer norm1(const Polynomial& p) {
   return sum;
 }
 
-// The coefficients of an integer polynomial modulo `prime`.
+// The coefficients of an integer polynomial modulo `prime`: its content's residue
+// times those of its primitive coefficients (no rational is built per term).
 std::vector<mp_limb_t> residues_of(const Polynomial& p, mp_limb_t prime) {
+  nmod_t mod;
+  nmod_init(&mod, prime);
+  const mp_limb_t content = mpz_fdiv_ui(to_integer(p.content()).get_mpz_t(), prime);
   std::vector<mp_limb_t> out(p.num_terms());
   for (std::size_t t = 0; t < p.num_terms(); ++t) {
-    const Integer c = to_integer(p.coefficient(t));
-    out[t] = mpz_fdiv_ui(c.get_mpz_t(), prime);
+    out[t] = nmod_mul(mpz_fdiv_ui(p.integer_coefficients()[t].get_mpz_t(), prime), content, mod);
   }
   return out;
 }
@@ -99,21 +102,33 @@ mp_limb_t evaluate_mod(const Polynomial& p, const std::vector<mp_limb_t>& residu
 bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& parametrization, const Budget& budget) {
   check_rings(implicit, parametrization);
   if (implicit.is_zero()) return true;
-  const RingPtr& params = parametrization.parameter_ring;
-  const std::size_t k = params->num_variables();
-  const std::size_t n = parametrization.coordinates.size();
-  const std::int32_t d = implicit.total_degree();
-
   // ω = lcm of the denominators and ξ_v = p_v·(ω / q_v), in `forms` as ω, ξ_1, …, ξ_n;
   // all scaled to integers (G only changes by a non-zero constant).
   std::vector<Polynomial> forms = common_denominator_form(parametrization);
   scale_to_integers(forms);
+  return substitutes_to_zero(implicit, parametrization, forms, budget);
+}
+
+bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& parametrization,
+                         std::span<const Polynomial> forms, const Budget& budget) {
+  check_rings(implicit, parametrization);
+  if (implicit.is_zero()) return true;
+  const RingPtr& params = parametrization.parameter_ring;
+  const std::size_t k = params->num_variables();
+  const std::size_t n = parametrization.coordinates.size();
+  if (forms.size() != n + 1) throw std::invalid_argument("substitutes_to_zero: ω and one form per coordinate expected");
+  const std::int32_t d = implicit.total_degree();
   const Polynomial f = implicit.primitive_part();
 
-  // The grid: d·m_j + 1 points along parameter j.
+  // The grid: d·m_j + 1 points along parameter j, of which only those whose indices
+  // sum to at most d·N are used (N the largest total degree among the forms; see the
+  // header: G's exponents lie in that lower set, and its points determine G).
   std::vector<std::size_t> grid(k);
   std::vector<std::int32_t> top(k, 0);
+  std::int32_t total = 0;
   double points = 1;
+  for (const auto& p : forms) total = std::max(total, p.total_degree());
+  const std::size_t index_sum_bound = static_cast<std::size_t>(d) * static_cast<std::size_t>(total);
   for (std::size_t j = 0; j < k; ++j) {
     for (const auto& p : forms) top[j] = std::max(top[j], p.degree_in(j));
     grid[j] = static_cast<std::size_t>(d * top[j]) + 1;
@@ -153,9 +168,8 @@ bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& para
     std::vector<std::vector<mp_limb_t>> form_residues;
     for (const auto& form : forms) form_residues.push_back(residues_of(form, p));
     const std::vector<mp_limb_t> f_residues = residues_of(f, p);
-    // Parameter j takes the values 0, 1, …, grid[j] − 1: distinct modulo p.
-    std::vector<std::size_t> index(k, 0);
-    for (bool more = true; more;) {
+    // G mod p at the grid point `index` (parameter j taking the value index[j]).
+    auto value_at = [&](const std::vector<std::size_t>& index) {
       for (std::size_t j = 0; j < k; ++j) {
         parameter_powers[j].assign(static_cast<std::size_t>(top[j]) + 1, 1);
         for (std::size_t e = 1; e < parameter_powers[j].size(); ++e) {
@@ -181,14 +195,23 @@ bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& para
         term = nmod_mul(term, value_powers[0][static_cast<std::size_t>(d - degree)], mod);
         g = nmod_add(g, term, mod);
       }
-      if (g != 0) return false;  // G mod p ≠ 0, so G ≠ 0
+      return g;
+    };
+    // Parameter j takes the values 0, 1, …, grid[j] − 1: distinct modulo p.
+    std::vector<std::size_t> index(k, 0);
+    std::size_t index_sum = 0;
+    for (bool more = true; more;) {
+      // Outside the lower set there is nothing to evaluate.
+      if (index_sum <= index_sum_bound && value_at(index) != 0) return false;  // G mod p ≠ 0, so G ≠ 0
       // The next grid point (last parameter fastest); a budget check per grid line.
       more = false;
       for (std::size_t j = k; j-- > 0;) {
         if (++index[j] < grid[j]) {
+          ++index_sum;
           more = true;
           break;
         }
+        index_sum -= index[j] - 1;
         index[j] = 0;
         if (j == k - 1) budget.check("verification");
       }

@@ -2,19 +2,34 @@
 
 #include <flint/ulong_extras.h>
 
+#include <map>
+#include <mutex>
+#include <vector>
+
 namespace implicitizer {
 
-PrimeSequence::PrimeSequence(std::uint64_t skip) : current_((std::uint64_t{1} << 62) + (skip << 40)) {}
+namespace {
+
+// The primes found so far after each start. A handful of starts occur (the skips of
+// the routes, and the small starts of tests), each with at most a few thousand primes.
+std::mutex cache_mutex;
+std::map<std::uint64_t, std::vector<std::uint64_t>> cache;
+
+}  // namespace
+
+PrimeSequence::PrimeSequence(std::uint64_t skip) : start_((std::uint64_t{1} << 62) + (skip << 40)) {}
 
 PrimeSequence PrimeSequence::from(std::uint64_t start) {
   PrimeSequence sequence;
-  sequence.current_ = start;
+  sequence.start_ = start;
   return sequence;
 }
 
 std::uint64_t PrimeSequence::next() {
-  current_ = n_nextprime(current_, /*proved=*/1);
-  return current_;
+  const std::lock_guard<std::mutex> lock(cache_mutex);
+  std::vector<std::uint64_t>& primes = cache[start_];
+  while (primes.size() <= taken_) primes.push_back(n_nextprime(primes.empty() ? start_ : primes.back(), /*proved=*/1));
+  return primes[taken_++];
 }
 
 std::uint64_t ResidueStream::next(std::uint64_t modulus) {

@@ -3,6 +3,7 @@
 /// The word-size primes that modular algorithms work with, in a fixed order so that
 /// runs are reproducible, and helpers for arithmetic modulo one of them.
 
+#include <cstddef>
 #include <cstdint>
 
 namespace implicitizer {
@@ -18,11 +19,15 @@ class PrimeSequence {
   explicit PrimeSequence(std::uint64_t skip = 0);
   /// Starts just above `start` (any value ≥ 2); lets tests use small primes.
   static PrimeSequence from(std::uint64_t start);
-  /// The next prime of the sequence.
+  /// The next prime of the sequence. The primes of each start are found once per
+  /// process (n_nextprime with a proof costs a few microseconds each, as much as a
+  /// whole modular image of a small surface) and shared by every sequence with that
+  /// start, from any thread.
   std::uint64_t next();
 
  private:
-  std::uint64_t current_;
+  std::uint64_t start_;
+  std::size_t taken_ = 0;
 };
 
 /// A reproducible stream of pseudo-random residues (splitmix64), for evaluation
