@@ -216,6 +216,46 @@ TEST(Interpolation, ImagesThatAreNotHypersurfaces) {
             std::string::npos);
 }
 
+TEST(Interpolation, UpToADegreeAnswersBelowItAndProvesTheDegreeHigherAbove) {
+  // What auto's first rule relies on: the answer of the whole route when the degree
+  // is at most the cap, nullopt when it is higher, whatever the bound.
+  const Parametrization sphere = parse_parametrization("2*s/(1+s^2+t^2)", "2*t/(1+s^2+t^2)", "(s^2+t^2-1)/(1+s^2+t^2)");
+  const std::optional<InterpolationResult> small = implicitize_by_interpolation_up_to(sphere, 4);
+  ASSERT_TRUE(small);
+  EXPECT_EQ(to_string(small->implicit), "x^2+y^2+z^2-1");
+  EXPECT_EQ(small->stats.degree_bound, 4);
+  EXPECT_FALSE(implicitize_by_interpolation_up_to(sphere, 1));  // degree 2 > 1
+  for (const char* name : {"tp_22", "tri_cubic", "tp_33"}) {
+    SCOPED_TRACE(name);
+    const testing::Surface s = hard_surface(name);
+    const Parametrization p = parametrization_of(s);
+    EXPECT_FALSE(implicitize_by_interpolation_up_to(p, 4));
+    // At the degree itself the capped search is the route.
+    if (s.degree <= 9) {
+      const std::optional<InterpolationResult> at = implicitize_by_interpolation_up_to(p, s.degree);
+      ASSERT_TRUE(at);
+      EXPECT_EQ(at->implicit, implicitize_by_interpolation(p).implicit);
+    }
+  }
+  // With the cap at or above the bound, the whole route: a dense image still throws.
+  EXPECT_THROW(implicitize_by_interpolation_up_to(parse_parametrization("s", "t", "u"), 4), NoSingleEquation);
+  EXPECT_THROW(implicitize_by_interpolation_up_to(sphere, 0), std::invalid_argument);
+}
+
+TEST(Interpolation, ATrialDenominatorSavesThePrimeOfSmallSurfaces) {
+  // Their equations have a small leading coefficient and larger others (tri_quadratic:
+  // 2209 and 2^28), beyond the balanced bound of one 62-bit prime; the lcm of the
+  // denominators found so far, tried on the rest, completes the candidate from one
+  // prime, and the verification proves it.
+  for (const char* name : {"tri_quadratic", "tp_11_rational", "tp_21"}) {
+    SCOPED_TRACE(name);
+    const InterpolationResult r = implicitize_by_interpolation(parametrization_of(hard_surface(name)));
+    EXPECT_EQ(r.stats.primes, 1u);
+    EXPECT_EQ(r.stats.rejected_candidates, 0u);
+    EXPECT_EQ(r.stats.degree_probes, 1u);  // the bound's 35 columns at once (kDirectColumns)
+  }
+}
+
 TEST(Interpolation, SmallPrimesNeedManyRoundsAndGiveTheSameAnswer) {
   // Primes just above 1000: each carries 10 bits, so the reconstruction needs many
   // of them, and values that a 62-bit prime would take in one step are confirmed

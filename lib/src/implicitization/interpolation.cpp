@@ -40,6 +40,13 @@ constexpr unsigned kMaxThreads = 4;
 // determine the kernel; the extra ones absorb points that repeat an image point.
 constexpr std::size_t kExtraRows = 8;
 
+// A bound whose matrix has at most this many columns (degree 4 in space, 7 in the
+// plane) is taken at once, without the upward search: a 39×35 kernel costs about as
+// much as the setup of the smaller ones below it, and it reads the degree from its
+// nullity (tp_11_rational: one kernel instead of two; tri_quadratic: one instead of
+// three).
+constexpr double kDirectColumns = 36;
+
 // Rational reconstruction accepts a value only with this many bits to spare, so that
 // a residue that is not yet the image of a small rational is taken for one with
 // probability about 2^-20; such a false value is refuted by the next prime.
@@ -68,6 +75,21 @@ IntegerPolynomial integer_polynomial(const Polynomial& p) {
   return out;
 }
 
+// ∂p/∂(variable j) of `p` in k variables, on the plain data (terms in p's order;
+// only evaluated, so no order is needed): cheaper than Polynomial::derivative, which
+// on a small surface cost a tenth of the route.
+IntegerPolynomial partial_derivative(const IntegerPolynomial& p, std::size_t k, std::size_t j) {
+  IntegerPolynomial out;
+  for (std::size_t t = 0; t < p.coefficients.size(); ++t) {
+    const std::int32_t* e = p.exponents.data() + t * k;
+    if (e[j] == 0) continue;
+    out.coefficients.push_back(p.coefficients[t] * e[j]);
+    out.exponents.insert(out.exponents.end(), e, e + k);
+    --out.exponents[out.exponents.size() - k + j];
+  }
+  return out;
+}
+
 // ω, ξ_1, …, ξ_n of common_denominator_form() scaled to integers (the map does not
 // change), with their first derivatives for the Jacobian.
 struct MapForms {
@@ -87,7 +109,7 @@ MapForms map_forms(const Parametrization& p) {
   for (const Polynomial& f : m.exact) {
     m.forms.push_back(integer_polynomial(f));
     std::vector<IntegerPolynomial> row;
-    for (std::size_t j = 0; j < m.parameters; ++j) row.push_back(integer_polynomial(f.derivative(j)));
+    for (std::size_t j = 0; j < m.parameters; ++j) row.push_back(partial_derivative(m.forms.back(), m.parameters, j));
     m.partials.push_back(std::move(row));
   }
   return m;
@@ -538,6 +560,7 @@ class RationalLift {
       if (!known_[i]) known_[i] = reconstruct(i);
       complete = complete && known_[i];
     }
+    if (!complete) complete = reconstruct_with_trial_denominator();
     return complete;
   }
 
@@ -569,6 +592,39 @@ class RationalLift {
     }
     // FLINT needs positive bounds; below 2^21 only the test above can accept.
     return !fmpz_is_zero(bound_) && fmpq_reconstruct_fmpz_2(&values_[i], &residues_[i], modulus_, bound_, bound_) != 0;
+  }
+
+  // The second test with a trial L: the lcm of every denominator found so far,
+  // confirmed or not. All those values share F_lead's divisors as denominators, so
+  // the balanced bound of the first test is what fails on an equation with a small
+  // leading coefficient and large others (tri_quadratic: 2209 and 2^28; 62-bit M
+  // allows 2^20 for both), while every a·L is then small. A wrong trial L passes for
+  // a coefficient with probability about 2^-20, and the candidate is verified anyway:
+  // this saves a prime (a whole kernel) on most small surfaces.
+  bool reconstruct_with_trial_denominator() {
+    fmpz_t trial;
+    fmpz_init_set(trial, denominator_);
+    for (std::size_t i = 0; i < values_.size(); ++i) {
+      if (known_[i]) fmpz_lcm(trial, trial, fmpq_denref(&values_[i]));
+    }
+    bool complete = !fmpz_equal(trial, denominator_);  // else the first test already failed
+    for (std::size_t i = 0; complete && i < residues_.size(); ++i) {
+      if (known_[i]) continue;
+      fmpz_mul(scratch_, &residues_[i], trial);
+      fmpz_smod(scratch_, scratch_, modulus_);
+      complete = fmpz_bits(scratch_) + kMarginBits < fmpz_bits(modulus_);
+    }
+    if (complete) {
+      for (std::size_t i = 0; i < residues_.size(); ++i) {
+        if (known_[i]) continue;
+        fmpz_mul(scratch_, &residues_[i], trial);
+        fmpz_smod(scratch_, scratch_, modulus_);
+        fmpq_set_fmpz_frac(&values_[i], scratch_, trial);
+        known_[i] = 1;
+      }
+    }
+    fmpz_clear(trial);
+    return complete;
   }
 
   std::vector<fmpz> residues_;  // in [0, M)
@@ -606,13 +662,18 @@ class InterpolationDriver {
   InterpolationDriver(const Parametrization& p, const InterpolationOptions& options)
       : parametrization_(p), options_(options), forms_(map_forms(p)), primes_(options.primes) {}
 
-  InterpolationResult run() {
+  // The equation, or nullopt when its degree is proven above `max_degree` (only
+  // when that is below the degree bound: at the bound there is no such answer).
+  std::optional<InterpolationResult> run(std::int32_t max_degree = kMaxTotalDegree) {
     const auto start = Clock::now();
     const std::size_t n = forms_.coordinates;
     const std::int64_t bound = degree_bound_of(forms_);
     stats_.degree_bound = static_cast<std::int32_t>(std::min<std::int64_t>(bound, kMaxTotalDegree));
     check_image_dimension(forms_, options_.seed, options_.budget);
-    const std::int32_t d_max = stats_.degree_bound;
+    // The search treats the cap as the bound: a kernel at degree D ≥ e still has
+    // dimension C(D − e + n, n), whether D is the bound or not.
+    const bool capped = max_degree < stats_.degree_bound;
+    const std::int32_t d_max = capped ? max_degree : stats_.degree_bound;
     const double max_columns = static_cast<double>(options_.max_columns);
     stats_.search_ms += ms_since(start);
 
@@ -623,16 +684,18 @@ class InterpolationDriver {
       std::int32_t degree = current;
       if (searching) {
         if (lower_ > d_max) {
+          if (capped) return std::nullopt;
           throw NoSingleEquation("no implicit equation: no polynomial of degree at most " + std::to_string(d_max) +
                                      " (the degree bound) vanishes on the image, which is dense in " +
                                      (n == 3 ? "space" : "the plane"),
                                  {});
         }
         // Upward while a kernel costs at most an eighth of the one at the bound (half
-        // the columns), or when the bound's matrix is too large; else at the bound.
+        // the columns), or when the bound's matrix is too large; else at the bound,
+        // and at once when the bound's matrix is tiny (kDirectColumns).
         const double here = monomial_count(n, lower_);
         const double at_bound = monomial_count(n, d_max);
-        if (!(2 * here <= at_bound || at_bound > max_columns)) degree = d_max;
+        if (at_bound <= max_columns && (2 * here > at_bound || at_bound <= kDirectColumns)) degree = d_max;
       }
       const double columns = monomial_count(n, degree);
       // The equation has at most one term per column: the budget's size limit applies.
@@ -720,6 +783,11 @@ class InterpolationDriver {
       return std::nullopt;
     }
     if (image.nullity == 0) {
+      // This refutes the degree the probes above it read: their primes were unlucky.
+      if (estimate_ > 0 && image.degree >= estimate_) {
+        stats_.unlucky_primes += estimate_probes_;
+        estimate_probes_ = 0;
+      }
       lower_ = std::max(lower_, image.degree + 1);
       settle_degree();
       return std::nullopt;
@@ -729,12 +797,16 @@ class InterpolationDriver {
       ++stats_.unlucky_primes;
       return std::nullopt;
     }
+    if (*read > estimate_) estimate_probes_ = 0;
     estimate_ = std::max(estimate_, *read);
     settle_degree();
     // A probe above e holds F's multiples and only tells the degree. At e the
     // nullity is 1 (read = degree) and the vector has degree exactly e: were it of
     // degree < e, its products with x, y, z would be further kernel vectors.
-    if (image.degree != lift_degree_) return std::nullopt;
+    if (image.degree != lift_degree_) {
+      ++estimate_probes_;
+      return std::nullopt;
+    }
     if (image.nullity != 1) throw std::logic_error("interpolation: a kernel of dimension > 1 at the degree found");
     if (lead_ && image.lead > *lead_) {  // p divides F's leading coefficient
       ++stats_.unlucky_primes;
@@ -778,7 +850,7 @@ class InterpolationDriver {
     if (options_.tamper_candidate) options_.tamper_candidate(candidate);
     if (rejected_ && candidate == *rejected_) return std::nullopt;  // the same wrong answer again
     const auto verify_start = Clock::now();
-    const bool vanishes = substitutes_to_zero(candidate, parametrization_, options_.budget);
+    const bool vanishes = substitutes_to_zero(candidate, parametrization_, forms_.exact, options_.budget);
     stats_.verify_ms += ms_since(verify_start);
     if (vanishes) return candidate;
     ++stats_.rejected_candidates;
@@ -795,6 +867,7 @@ class InterpolationDriver {
   std::map<std::int32_t, MonomialBasis> bases_;
   std::int32_t lower_ = 1;     // proven: e ≥ lower_
   std::int32_t estimate_ = 0;  // the largest degree read from a non-zero kernel (0: none)
+  std::size_t estimate_probes_ = 0;  // kernels above estimate_ that read it
   std::int32_t lift_degree_ = 0;
   std::optional<RationalLift> lift_;
   std::optional<std::size_t> lead_;
@@ -812,7 +885,18 @@ InterpolationResult implicitize_by_interpolation(const Parametrization& parametr
                                                  const InterpolationOptions& options) {
   const std::size_t n = parametrization.coordinates.size();
   if (n != 2 && n != 3) throw std::invalid_argument("implicitize_by_interpolation: two or three coordinates expected");
-  return InterpolationDriver(parametrization, options).run();
+  return *InterpolationDriver(parametrization, options).run();
+}
+
+std::optional<InterpolationResult> implicitize_by_interpolation_up_to(const Parametrization& parametrization,
+                                                                      std::int32_t max_degree,
+                                                                      const InterpolationOptions& options) {
+  const std::size_t n = parametrization.coordinates.size();
+  if (n != 2 && n != 3) {
+    throw std::invalid_argument("implicitize_by_interpolation_up_to: two or three coordinates expected");
+  }
+  if (max_degree < 1) throw std::invalid_argument("implicitize_by_interpolation_up_to: max_degree ≥ 1 expected");
+  return InterpolationDriver(parametrization, options).run(max_degree);
 }
 
 ImplicitEquationCheck check_implicit_equation(const Polynomial& candidate, const Parametrization& parametrization,
