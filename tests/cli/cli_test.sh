@@ -121,7 +121,7 @@ fi
 # ---- implicitize --json ----
 expect_json "implicitize JSON shape" 0 "
 j['implicit'] == 'x-y-z' and j['degree'] == 1 and j['variables'] == ['x','y','z']
-and j['method'] == 'groebner' and j['verified'] is True and isinstance(j['elapsed_ms'], (int, float))
+and j['method'] == 'interpolation' and j['verified'] is True and isinstance(j['elapsed_ms'], (int, float))
 and all(k in j['stats'] for k in ['pairs','product_criterion','chain_criterion','reductions',
   'zero_reductions','reduction_steps','max_degree','basis_size','verify_ms'])
 and 'eliminate' in j['reproduce']['singular'] and 'eliminate' in j['reproduce']['macaulay2']" \
@@ -168,10 +168,14 @@ and j['stats']['resultant']['matrix_size'] == 2 and j['stats']['resultant']['pro
 expect_status "base points refused" 4 "base points" implicitize --x "s*t" --y t --z "s^2" --method resultant
 expect_json "base points JSON" 4 "j['error']['code'] == 'base_points'" \
   implicitize --x "2*s/(1+s^2+t^2)" --y "2*t/(1+s^2+t^2)" --z "(s^2+t^2-1)/(1+s^2+t^2)" --method resultant --json
-expect_json "auto falls back on base points" 0 "
-j['method'] in ('groebner', 'interpolation') and j['implicit'] == 'y^2*z-x^2' and
-('head start' in j['stats']['route'] or j['stats']['resultant']['dixon_vanishes'] is True)" \
+expect_json "auto takes interpolation first at degree <= 4" 0 "
+j['method'] == 'interpolation' and j['implicit'] == 'y^2*z-x^2' and 'tried first' in j['stats']['route']
+and 'resultant' not in j['stats']" \
   implicitize --x "s*t" --y t --z "s^2" --json
+expect_json "auto falls back on base points above degree 4" 0 "
+j['method'] in ('groebner', 'interpolation') and j['implicit'] == 'x^3*y^3-2*x^2*y+y^3-x-z' and
+('head start' in j['stats']['route'] or j['stats']['resultant']['dixon_vanishes'] is True)" \
+  implicitize --x s --y t --z "s^3*t^3-2*s^2*t+t^3-s" --json
 expect_json "the modular groebner route" 0 "
 j['method'] == 'groebner' and j['implicit'] == 'y^2*z-x^2' and j['stats']['modular']['primes'] >= 2" \
   implicitize --x "s*t" --y t --z "s^2" --method groebner --modular --json

@@ -248,14 +248,14 @@ TEST(AnswerImplicitizeRequest, EncodesTheContractShape) {
   r.y = "s";
   r.z = "t";
   const std::string json = encode_implicitize_response(answer_implicitize_request(r));
-  // The plane: Buchberger answers within its head start, before the resultant's
-  // probe (docs/algorithms.md), and the stats say so.
-  EXPECT_EQ(json.rfind(R"({"implicit":"x-y-z","degree":1,"variables":["x","y","z"],"method":"groebner",)"
+  // The plane: degree ≤ 4, so interpolation answers first (docs/algorithms.md), and
+  // the stats say so.
+  EXPECT_EQ(json.rfind(R"({"implicit":"x-y-z","degree":1,"variables":["x","y","z"],"method":"interpolation",)"
                        R"("verified":true,"elapsed_ms":)",
                        0),
             0u)
       << json;
-  EXPECT_NE(json.find(R"("route":"groebner: Buchberger finished within its head start)"), std::string::npos) << json;
+  EXPECT_NE(json.find(R"("route":"interpolation: the degree is at most 4, tried first")"), std::string::npos) << json;
   EXPECT_NE(json.find(R"("reproduce":{"singular":")"), std::string::npos);
   // By the resultant: its 3x3 Macaulay matrix, with the probe's flags.
   r.method = "resultant";

@@ -195,18 +195,22 @@ TEST(Implicitize, ResultantAndGroebnerAgreeWhereBothFinish) {
 TEST(Implicitize, EveryHardSurfaceByTheResultant) {
   // Degrees 2 to 18, polynomial and rational; Singular needs more than 300 s for
   // tp_32 and tp_33. The answer is verified by exact substitution inside. auto takes
-  // the resultant on all of them but the smallest ones (tri_quadratic, tp_11_rational),
-  // where Buchberger's head start may suffice.
+  // interpolation on those of degree ≤ 4 (tri_quadratic, tp_11_rational, tp_21: rule
+  // 1 of docs/algorithms.md) and on the triangular patches of degree 9 (rule 4), the
+  // resultant on the others.
   for (const auto& s : testing::read_surfaces(std::string(IMPLICITIZER_SHARED_DIR) + "/bench/surfaces_hard.json")) {
     SCOPED_TRACE(s.name);
     const ImplicitizeResult r = by(ImplicitizationMethod::resultant, s.x, s.y, s.z);
     EXPECT_EQ(r.method, "resultant");
     const ImplicitizeResult a = implicitize(parse_parametrization(s.x, s.y, s.z));
-    if (s.name != "tri_quadratic" && s.name != "tp_11_rational") {
+    if (s.degree <= 4) {
+      EXPECT_EQ(a.method, "interpolation") << a.route;
+      EXPECT_NE(a.route.find("tried first"), std::string::npos) << a.route;
+    } else if (s.name == "tri_cubic" || s.name == "tri_cubic_rational") {
+      EXPECT_EQ(a.method, "interpolation") << a.route;
+      EXPECT_NE(a.route.find("Macaulay"), std::string::npos) << a.route;
+    } else {
       EXPECT_EQ(a.method, "resultant") << a.route;
-    }
-    if (a.method != "resultant") {
-      EXPECT_NE(a.route.find("head start"), std::string::npos) << a.route;
     }
     EXPECT_EQ(a.implicit, r.implicit);
     EXPECT_TRUE(r.verified);
@@ -284,7 +288,9 @@ TEST(Implicitize, HugeAndTinyCoefficientsByBothRoutes) {
 
 TEST(Implicitize, AutoGivesBuchbergerAHeadStartOnTriangularPatches) {
   // enneper (Macaulay's 36x36 quotient, about 15 ms) is answered by Buchberger in
-  // about 1 ms; tri_cubic (the same matrix) is not, and goes to the resultant.
+  // about 1 ms; tri_cubic (the same matrix) is not, and goes to interpolation (degree
+  // 9, below which it beats Macaulay's quotient); tri_quartic (degree 16) to the
+  // resultant.
   for (const auto& s : testing::read_surfaces(std::string(IMPLICITIZER_SHARED_DIR) + "/bench/surfaces_public.json")) {
     if (s.name != "enneper") continue;
     const ImplicitizeResult r = implicitize(parse_parametrization(s.x, s.y, s.z));
@@ -294,10 +300,13 @@ TEST(Implicitize, AutoGivesBuchbergerAHeadStartOnTriangularPatches) {
     EXPECT_EQ(r.resultant_stats->formulation, AuxiliaryFormulation::macaulay);
   }
   for (const auto& s : testing::read_surfaces(std::string(IMPLICITIZER_SHARED_DIR) + "/bench/surfaces_hard.json")) {
-    if (s.name != "tri_cubic") continue;
+    if (s.name != "tri_cubic" && s.name != "tri_quartic") continue;
+    SCOPED_TRACE(s.name);
     const ImplicitizeResult r = implicitize(parse_parametrization(s.x, s.y, s.z));
-    EXPECT_EQ(r.method, "resultant");
+    EXPECT_EQ(r.method, s.name == "tri_cubic" ? "interpolation" : "resultant");
     EXPECT_NE(r.route.find("head start"), std::string::npos) << r.route;
+    ASSERT_TRUE(r.resultant_stats);
+    EXPECT_EQ(r.resultant_stats->formulation, AuxiliaryFormulation::macaulay);
   }
 }
 
@@ -311,16 +320,11 @@ TEST(Implicitize, BasePointsMakeAutoFallBackAndResultantRefuse) {
                             "x^2-y^2*z"};
   for (std::size_t i = 0; i < 3; ++i) {
     SCOPED_TRACE(cases[i][0]);
-    // auto: Buchberger within its head start, or (after the probe found the base
-    // points) interpolation; which one depends on the machine's speed.
+    // auto: degree ≤ 4, so interpolation first, and no resultant probed.
     const ImplicitizeResult r = by(ImplicitizationMethod::automatic, cases[i][0], cases[i][1], cases[i][2]);
-    EXPECT_TRUE(r.method == "groebner" || r.method == "interpolation") << r.method;
+    EXPECT_EQ(r.method, "interpolation") << r.route;
     EXPECT_TRUE(r.verified);
-    if (r.method == "interpolation") {
-      ASSERT_TRUE(r.resultant_stats);
-      EXPECT_TRUE(r.resultant_stats->dixon_vanishes);
-      EXPECT_TRUE(r.resultant_stats->macaulay_vanishes);
-    }
+    EXPECT_FALSE(r.resultant_stats);
     expect_same_surface(to_string(r.implicit), expected[i]);
     // The Gröbner route modulo primes, proven by substitution and minimality.
     ImplicitizeOptions modular;

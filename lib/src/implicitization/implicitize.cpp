@@ -131,6 +131,23 @@ ImplicitizeResult by_interpolation(const Parametrization& p, const Budget& budge
   return result;
 }
 
+// The interpolation route limited to degrees ≤ max_degree: nullopt when the degree
+// is proven higher.
+std::optional<ImplicitizeResult> by_interpolation_up_to(const Parametrization& p, std::int32_t max_degree,
+                                                        const Budget& budget) {
+  InterpolationOptions interpolation;
+  interpolation.budget = budget;
+  std::optional<InterpolationResult> answer = implicitize_by_interpolation_up_to(p, max_degree, interpolation);
+  if (!answer) return std::nullopt;
+  ImplicitizeResult result;
+  result.implicit = std::move(answer->implicit);
+  result.method = "interpolation";
+  result.verified = true;  // as in by_interpolation
+  result.verify_ms = answer->stats.verify_ms;
+  result.interpolation_stats = answer->stats;
+  return result;
+}
+
 // The Gröbner route modulo primes: the elimination ideal's basis lifted alone, and
 // the one generator it should have proven to be the implicit equation (exact
 // substitution, and check_implicit_equation's minimality: a one-dimensional kernel of
@@ -265,6 +282,17 @@ std::optional<ImplicitizeResult> groebner_within(const Parametrization& p, const
 // included); the lower end is taken so that the head start stays short.
 constexpr double kSecondsPerOperation = 2e-9;
 
+// The degree below which `auto` tries interpolation before anything else: its kernels
+// have at most 35 columns, and it answers the surfaces of degree ≤ 4 in 0.1–0.6 ms
+// where Buchberger, the resultant's probe and the resultant take 0.3–3.4 ms (torus,
+// Steiner, tri_quadratic, tp_21; docs/benchmarks.md); above it, proving the degree
+// higher costs the kernels of degree ≤ 4, about 0.2 ms.
+constexpr std::int32_t kSmallDegree = 4;
+
+// The largest degree bound for which `auto` prefers interpolation to Macaulay's
+// resultant (triangular patches of degree 9: 220 columns; see where it is used).
+constexpr std::int32_t kInterpolationOverMacaulay = 9;
+
 // Buchberger's head start before interpolation when there is no resultant: the
 // sparse public surfaces finish within it (whitney_umbrella 0.19 ms, bicubic_graph
 // 0.36 ms, cone_rational 0.42 ms), the denser ones do not (torus 3.4 ms, Steiner
@@ -312,6 +340,24 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
     finish(*result, p, budget, start);
     return *result;
   }
+  if (options.method == ImplicitizationMethod::automatic && coordinates == 3) {
+    // Rule 1 of docs/algorithms.md: a surface of degree ≤ kSmallDegree by
+    // interpolation, which proves a higher degree cheaply.
+    try {
+      if (auto small = by_interpolation_up_to(p, kSmallDegree, budget)) {
+        small->route = "interpolation: the degree is at most " + std::to_string(kSmallDegree) + ", tried first";
+        finish(*small, p, budget, start);
+        return *small;
+      }
+    } catch (const NoSingleEquation&) {
+      // Not a surface: Buchberger lists the generators of the elimination ideal.
+      ImplicitizeResult result = by_groebner(p, options);
+      finish(result, p, budget, start);
+      return result;
+    } catch (const LimitExceeded& e) {
+      if (e.limit() != Limit::size) throw;  // a term limit below 35: the other routes may fit it
+    }
+  }
   if (options.method == ImplicitizationMethod::automatic && resultant_applies && coordinates == 2) {
     if (auto result = by_resultant(p, budget, probe)) {
       result->route = "resultant: a plane curve (Sylvester)";
@@ -348,6 +394,21 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
                        " ms before Macaulay's resultant";
         finish(*quick, p, budget, start);
         return *quick;
+      }
+      // Up to degree kInterpolationOverMacaulay, interpolation beats Macaulay's
+      // quotient (tri_cubic 18 against 45 ms, tri_cubic_rational 35 against 50 ms);
+      // at degree 16 it loses (tri_quartic 1.6 against 0.84 s).
+      if (implicit_degree_bound(p) <= kInterpolationOverMacaulay) {
+        try {
+          ImplicitizeResult result = by_interpolation(p, budget);
+          result.resultant_stats = probe;
+          result.route = "interpolation: Buchberger did not finish within its head start, and below degree 10 "
+                         "interpolation is faster than Macaulay's resultant";
+          finish(result, p, budget, start);
+          return result;
+        } catch (const LimitExceeded& e) {
+          if (e.limit() != Limit::size) throw;  // a term limit below its columns: the resultant may fit
+        }
       }
     }
     if (plan.formulation) {
