@@ -293,6 +293,11 @@ constexpr std::int32_t kSmallDegree = 4;
 // resultant (triangular patches of degree 9: 220 columns; see where it is used).
 constexpr std::int32_t kInterpolationOverMacaulay = 9;
 
+// Interpolation's time as a share of Macaulay's quotient's at those degrees, for
+// Buchberger's head start before it: 0.42 on tri_cubic, 0.67 on tri_cubic_rational
+// (docs/benchmarks.md); the lower end keeps the head start short.
+constexpr double kInterpolationShareOfMacaulay = 0.4;
+
 // Buchberger's head start before interpolation when there is no resultant: the
 // sparse public surfaces finish within it (whitney_umbrella 0.19 ms, bicubic_graph
 // 0.36 ms, cone_rational 0.42 ms), the denser ones do not (torus 3.4 ms, Steiner
@@ -385,20 +390,24 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
         plan_auxiliary_resultant({f[0], f[1], f[2], f[3]}, resultant_options(budget, 1));
     probe = plan.stats;
     if (plan.formulation == AuxiliaryFormulation::macaulay) {
-      const double head_start = std::max(0.002, 0.5 * plan.predicted_operations() * kSecondsPerOperation);
+      // Up to degree kInterpolationOverMacaulay, interpolation beats Macaulay's
+      // quotient (tri_cubic 20 against 47 ms, tri_cubic_rational 35 against 52 ms);
+      // at degree 16 it loses (tri_quartic 1.6 against 0.80 s). Buchberger's head
+      // start is half the predicted time of the route that follows.
+      const bool interpolation_next = implicit_degree_bound(p) <= kInterpolationOverMacaulay;
+      const double next_seconds = plan.predicted_operations() * kSecondsPerOperation *
+                                  (interpolation_next ? kInterpolationShareOfMacaulay : 1.0);
+      const double head_start = std::max(0.002, 0.5 * next_seconds);
       if (auto quick = groebner_within(p, options, head_start)) {
         quick->resultant_stats = probe;
         char ms[32];
         std::snprintf(ms, sizeof ms, "%.1f", head_start * 1000);
-        quick->route = std::string("groebner: finished within its head start of ") + ms +
-                       " ms before Macaulay's resultant";
+        quick->route = std::string("groebner: finished within its head start of ") + ms + " ms before " +
+                       (interpolation_next ? "interpolation" : "Macaulay's resultant");
         finish(*quick, p, budget, start);
         return *quick;
       }
-      // Up to degree kInterpolationOverMacaulay, interpolation beats Macaulay's
-      // quotient (tri_cubic 18 against 45 ms, tri_cubic_rational 35 against 50 ms);
-      // at degree 16 it loses (tri_quartic 1.6 against 0.84 s).
-      if (implicit_degree_bound(p) <= kInterpolationOverMacaulay) {
+      if (interpolation_next) {
         try {
           ImplicitizeResult result = by_interpolation(p, budget);
           result.resultant_stats = probe;
