@@ -17,9 +17,9 @@
 ///
 /// With --routes, each surface is run by every route (groebner, resultant,
 /// interpolation, auto) under the same repeat and budget policy, beside Singular
-/// once, in one table whose last ratio, auto / min(groebner, resultant), is what
-/// auto's choice of route costs against an oracle that knew the faster of the two
-/// routes auto chooses from.
+/// once, in one table whose last ratio, auto / min(groebner, resultant,
+/// interpolation), is what auto's choice of route costs against an oracle that knew
+/// the fastest of the routes auto chooses from.
 ///
 /// This is not a test: it is not registered with ctest and its exit status only says
 /// whether an answer differed or a run failed (1) or not (0), never how fast it was.
@@ -62,8 +62,8 @@ constexpr const char* kUsage =
     "ideal, in the same run. --method picks our route (the column \"method\" shows the one\n"
     "taken); --routes instead times every route (groebner, resultant, interpolation, auto)\n"
     "on each surface beside Singular, with the ratios auto / Singular and\n"
-    "auto / min(groebner, resultant). --modular runs the groebner route modulo primes\n"
-    "(ImplicitizeOptions::modular_groebner). Defaults: --suite all --method auto --repeat 5\n"
+    "auto / min(groebner, resultant, interpolation). --modular runs the groebner route\n"
+    "modulo primes (ImplicitizeOptions::modular_groebner). Defaults: --suite all --method auto --repeat 5\n"
     "--repeat-below 1 --budget 60 --singular Singular --surfaces " IMPLICITIZER_BENCH_DIR "\n";
 
 /// The command line.
@@ -577,7 +577,7 @@ struct RoutesRow {
   std::string singular;
   std::string auto_vs_singular;      ///< wall times
   std::string auto_cpu_vs_singular;  ///< CPU times (auto's counts every thread)
-  std::string auto_vs_best;          ///< auto / min(groebner, resultant), wall times
+  std::string auto_vs_best;          ///< auto / min(groebner, resultant, interpolation), wall times
   std::string runs;                  ///< runs of groebner / resultant / interpolation / auto / Singular
   std::string check;
   bool failed = false;  ///< an answer differed, had the wrong degree, or a run failed
@@ -633,10 +633,10 @@ RoutesRow measure_routes(const Surface& surface, const Config& config) {
 
   row.auto_vs_singular = format_ratio_cell(wall_term(automatic, config), wall_term(theirs, config));
   row.auto_cpu_vs_singular = format_ratio_cell(cpu_term(automatic), cpu_term(theirs));
-  // The oracle's time: the faster route that finished; when neither did, the
+  // The oracle's time: the fastest route that finished; when none did, the
   // budget is a lower bound for it only if one was stopped by it.
   RatioTerm best;
-  for (const OurRun* route : {&groebner, &resultant}) {
+  for (const OurRun* route : {&groebner, &resultant, &interpolation}) {
     const RatioTerm term = wall_term(*route, config);
     if (term.kind == RatioTerm::Kind::finished && (best.kind != RatioTerm::Kind::finished || term.ms < best.ms)) {
       best = term;
