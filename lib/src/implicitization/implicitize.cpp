@@ -282,11 +282,11 @@ std::optional<ImplicitizeResult> groebner_within(const Parametrization& p, const
 // included); the lower end is taken so that the head start stays short.
 constexpr double kSecondsPerOperation = 2e-9;
 
-// The degree below which `auto` tries interpolation before anything else: its kernels
-// have at most 35 columns, and it answers the surfaces of degree ≤ 4 in 0.1–0.6 ms
-// where Buchberger, the resultant's probe and the resultant take 0.3–3.4 ms (torus,
-// Steiner, tri_quadratic, tp_21; docs/benchmarks.md); above it, proving the degree
-// higher costs the kernels of degree ≤ 4, about 0.2 ms.
+// The degree up to which `auto` tries interpolation before anything else: its kernels
+// have at most 35 columns, and it answers the benchmark's surfaces of degree ≤ 4 in
+// 0.04–0.3 ms where Buchberger takes 0.8–3.0 ms on the dense ones (torus, Steiner,
+// tri_quadratic, tp_21) and the resultant 0.7–1.2 ms (docs/benchmarks.md); above it,
+// proving the degree higher costs the kernels of degree ≤ 4, about 0.2 ms.
 constexpr std::int32_t kSmallDegree = 4;
 
 // The largest degree bound for which `auto` prefers interpolation to Macaulay's
@@ -294,7 +294,7 @@ constexpr std::int32_t kSmallDegree = 4;
 constexpr std::int32_t kInterpolationOverMacaulay = 9;
 
 // Interpolation's time as a share of Macaulay's quotient's at those degrees, for
-// Buchberger's head start before it: 0.42 on tri_cubic, 0.67 on tri_cubic_rational
+// Buchberger's head start before it: 0.40 on tri_cubic, 0.60 on tri_cubic_rational
 // (docs/benchmarks.md); the lower end keeps the head start short.
 constexpr double kInterpolationShareOfMacaulay = 0.4;
 
@@ -346,7 +346,7 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
     return *result;
   }
   if (options.method == ImplicitizationMethod::automatic && coordinates == 3) {
-    // Rule 1 of docs/algorithms.md: a surface of degree ≤ kSmallDegree by
+    // Rule 2 of docs/algorithms.md: a surface of degree ≤ kSmallDegree by
     // interpolation, which proves a higher degree cheaply.
     try {
       if (auto small = by_interpolation_up_to(p, kSmallDegree, budget)) {
@@ -371,13 +371,14 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
     }
   }
   if (options.method == ImplicitizationMethod::automatic && resultant_applies && coordinates == 3) {
-    // The rule of docs/algorithms.md: with base points, Buchberger. Dixon's
+    // Rules 3–5 of docs/algorithms.md (rule 6, base points, below). Dixon's
     // determinant (tensor-product patches) is never measurably slower than
     // Buchberger, so it is taken at once. Macaulay's (triangular patches) loses to
     // Buchberger on sparse inputs (enneper: 17 ms against 0.8 ms) and wins by orders
     // of magnitude on dense ones (tri_cubic: 40 ms against more than 60 s), and which
     // is which shows only by running: Buchberger gets a head start of half the
-    // predicted determinant time (at least 2 ms), then the resultant runs.
+    // predicted time of what follows (at least 2 ms), then interpolation (degree
+    // ≤ 9) or the resultant runs.
     // Before the probe (1–3 ms on a dense triangular patch: bicubic_graph's 153×153
     // Macaulay matrix), Buchberger's short head start answers the sparse ideals.
     if (auto quick = groebner_within(p, options, kBaseHeadStartSeconds)) {
@@ -391,8 +392,8 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
     probe = plan.stats;
     if (plan.formulation == AuxiliaryFormulation::macaulay) {
       // Up to degree kInterpolationOverMacaulay, interpolation beats Macaulay's
-      // quotient (tri_cubic 20 against 47 ms, tri_cubic_rational 35 against 52 ms);
-      // at degree 16 it loses (tri_quartic 1.6 against 0.80 s). Buchberger's head
+      // quotient (tri_cubic 17 against 42 ms, tri_cubic_rational 30 against 50 ms);
+      // at degree 16 it loses (tri_quartic 1.6 against 0.86 s). Buchberger's head
       // start is half the predicted time of the route that follows.
       const bool interpolation_next = implicit_degree_bound(p) <= kInterpolationOverMacaulay;
       const double next_seconds = plan.predicted_operations() * kSecondsPerOperation *

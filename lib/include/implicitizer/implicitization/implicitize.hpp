@@ -27,7 +27,7 @@ inline RingPtr implicit_ring(std::size_t coordinates) { return coordinates == 2 
 
 /// Which route computes the equation.
 enum class ImplicitizationMethod {
-  automatic,      ///< the auxiliary resultant when it applies, else Gröbner (docs/algorithms.md)
+  automatic,      ///< chosen by measured rules among the others (docs/algorithms.md)
   groebner,       ///< elimination with Buchberger's algorithm
   resultant,      ///< the auxiliary resultant; refused (base_points) when it vanishes
   interpolation,  ///< the kernel of evaluated monomials modulo primes (interpolation.hpp)
@@ -60,9 +60,9 @@ struct ImplicitizeResult {
   double verify_ms = 0;            ///< of which spent verifying
   BuchbergerStats stats;           ///< of the elimination (Gröbner route)
   /// Of the auxiliary resultant (resultant route; also set when `auto` probed it and
-  /// fell back to Gröbner, with dixon_vanishes and macaulay_vanishes true).
+  /// took another route).
   std::optional<AuxiliaryResultantStats> resultant_stats;
-  /// Of the interpolation route (method interpolation only).
+  /// Of the interpolation route (method interpolation, or auto's choice of it).
   std::optional<InterpolationStats> interpolation_stats;
   /// Of the modular elimination (the Gröbner route with modular_groebner, or auto's
   /// fallback where interpolation's matrix is too large).
@@ -88,8 +88,11 @@ struct ImplicitizeResult {
 ///     `method_not_applicable` for other numbers of parameters;
 ///   - interpolation: implicitize_by_interpolation() under the budget of
 ///     `options.groebner` (any number of parameters, base points or not);
-///   - auto: resultant when it applies, else groebner (the rule and the measurements
-///     behind it are in docs/algorithms.md).
+///   - auto: interpolation up to degree 4; else, after short head starts for
+///     Buchberger, the resultant (tensor-product patches, triangular ones above
+///     degree 9) or interpolation (triangular patches up to degree 9, base points);
+///     the modular elimination or Buchberger where those cannot answer (the rule
+///     and the measurements behind it are in docs/algorithms.md).
 /// Throws NoSingleEquation when the ideal is zero or needs several generators (the
 /// image is a curve, a point, or fills space), LimitExceeded when the budget runs out.
 /// A failed verification throws std::logic_error: it is a bug, never an answer.
