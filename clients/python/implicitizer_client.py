@@ -199,7 +199,7 @@ class Client:
 
         Without `z` the parametrization is plane and the answer is its implicit curve.
         `parameters` (a list of names) defaults to the identifiers other than x, y, z;
-        `method` is "auto" (default), "groebner" or "resultant"; `timeout_ms` the
+        `method` is "auto" (default), "groebner", "resultant" or "interpolation"; `timeout_ms` the
         computation budget (server default 10 s, at most 60 s). Returns the response
         object: `implicit`, `degree`, `variables`, `method`, `verified`, `elapsed_ms`,
         `stats`, `reproduce`. A curve or point image raises ImplicitizerError
