@@ -48,10 +48,11 @@ options:
   --z E                 its third coordinate (omit it for a plane curve)
   --params s,t          the parameters (default: every identifier other than x, y, z,
                         in order of first appearance, --x first)
-  --method M            auto (default): interpolation when the degree is at most 4,
-                        else Buchberger's head start, the resultant when it applies
-                        and there are no base points, else interpolation
-                        (docs/algorithms.md has the rule); groebner: Buchberger;
+  --method M            auto (default): interpolation when the degree is at most 4;
+                        else, after a head start for Buchberger, the resultant
+                        without base points (interpolation for triangular patches
+                        up to degree 9), else interpolation (docs/algorithms.md
+                        has the rule); groebner: Buchberger;
                         resultant: the auxiliary resultant, or exit 4 (base_points);
                         interpolation: the kernel of evaluated monomials modulo
                         primes (any parametrization, base points or not)
