@@ -432,8 +432,9 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
     }
   }
   if (options.method == ImplicitizationMethod::automatic) {
-    // No resultant (base points, or another number of parameters). The rule of
-    // docs/algorithms.md, measured on the public surfaces: sparse ideals are
+    // No resultant (base points, or another number of parameters). Rule 6 of
+    // docs/algorithms.md, measured on the public surfaces (before rule 2 took those
+    // of degree ≤ 4, the torus and Steiner's surface among them): sparse ideals are
     // Buchberger's (whitney_umbrella 0.19 ms, bicubic_graph 0.36 ms, against 0.41 and
     // 2.1 ms by interpolation), denser ones interpolation's (the torus 0.76 ms and
     // Steiner's surface 0.90 ms, against 3.4 and 2.7 ms), and only running tells
