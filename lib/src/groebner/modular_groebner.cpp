@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <exception>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -16,6 +15,7 @@
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/groebner/reduced_basis.hpp"
 #include "implicitizer/modular/flint_handles.hpp"
+#include "implicitizer/modular/one_per_thread.hpp"
 #include "implicitizer/modular/prime_sequence.hpp"
 #include "int_polynomial.hpp"
 #include "mod_polynomial.hpp"
@@ -391,21 +391,9 @@ class ModularDriver {
       std::vector<std::uint64_t> primes;
       for (std::size_t i = batch.size(); i < wanted; ++i) primes.push_back(primes_.next());
       std::vector<PrimeRun> runs(primes.size());
-      std::vector<std::exception_ptr> errors(primes.size());
-      const auto work = [&](std::size_t k) {
-        try {
-          runs[k] = run_prime(*run_ring_, generators_, primes[k], params_.buchberger, projection_);
-        } catch (...) {
-          errors[k] = std::current_exception();
-        }
-      };
-      std::vector<std::thread> helpers;
-      for (std::size_t k = 1; k < primes.size(); ++k) helpers.emplace_back(work, k);
-      work(0);
-      for (auto& t : helpers) t.join();
-      for (const auto& e : errors) {
-        if (e) std::rethrow_exception(e);
-      }
+      run_one_per_thread(primes.size(), [&](std::size_t k) {
+        runs[k] = run_prime(*run_ring_, generators_, primes[k], params_.buchberger, projection_);
+      });
       for (auto& r : runs) {
         if (r.bad) {
           ++stats_.bad_primes;

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -22,6 +21,7 @@
 #include "implicitizer/implicitization/implicitize.hpp"
 #include "implicitizer/implicitization/verify.hpp"
 #include "implicitizer/modular/flint_handles.hpp"
+#include "implicitizer/modular/one_per_thread.hpp"
 
 namespace implicitizer {
 
@@ -751,21 +751,9 @@ class InterpolationDriver {
                           "interpolation: more than " + std::to_string(options_.max_primes) + " primes needed");
     }
     std::vector<KernelImage> images(threads);
-    std::vector<std::exception_ptr> errors(threads);
-    auto work = [&](std::size_t i) {
-      try {
-        images[i] = kernel_modulo(forms_, basis, batch[i], options_.seed, options_.budget);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-    };
-    std::vector<std::thread> pool;
-    for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(work, i);
-    work(0);
-    for (auto& t : pool) t.join();
-    for (const auto& e : errors) {
-      if (e) std::rethrow_exception(e);
-    }
+    run_one_per_thread(threads, [&](std::size_t i) {
+      images[i] = kernel_modulo(forms_, basis, batch[i], options_.seed, options_.budget);
+    });
     return images;
   }
 

@@ -5,12 +5,12 @@
 #include <flint/nmod_vec.h>
 
 #include <algorithm>
-#include <exception>
 #include <optional>
 #include <stdexcept>
 #include <thread>
 
 #include "implicitizer/modular/flint_handles.hpp"
+#include "implicitizer/modular/one_per_thread.hpp"
 
 namespace implicitizer {
 
@@ -338,21 +338,9 @@ Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, c
     for (auto& p : batch) p = primes.next();
     std::vector<std::optional<std::vector<mp_limb_t>>> images(threads);
     std::vector<std::size_t> evaluations(threads, 0);
-    std::vector<std::exception_ptr> errors(threads);
-    auto work = [&](std::size_t i) {
-      try {
-        images[i] = image_modulo(pencil, options, support, batch[i], options.seed, evaluations[i]);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-    };
-    std::vector<std::thread> pool;
-    for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(work, i);
-    work(0);
-    for (auto& t : pool) t.join();
-    for (const auto& e : errors) {
-      if (e) std::rethrow_exception(e);
-    }
+    run_one_per_thread(threads, [&](std::size_t i) {
+      images[i] = image_modulo(pencil, options, support, batch[i], options.seed, evaluations[i]);
+    });
 
     for (std::size_t i = 0; i < threads && !done; ++i) {
       stats.evaluations += evaluations[i];

@@ -1,0 +1,37 @@
+#pragma once
+/// \file
+/// The batch loop every multi-modular computation here shares: independent jobs
+/// (one per prime), one per thread, the first on the calling thread, and the first
+/// error rethrown once all have ended. Callers combine the results in job order,
+/// so that answers do not depend on scheduling.
+
+#include <cstddef>
+#include <exception>
+#include <thread>
+#include <vector>
+
+namespace implicitizer {
+
+/// Runs work(0), …, work(count − 1) concurrently, work(0) on the calling thread;
+/// returns when all have ended, rethrowing the exception of the lowest-numbered job
+/// that threw.
+template <typename Work>
+void run_one_per_thread(std::size_t count, const Work& work) {
+  std::vector<std::exception_ptr> errors(count);
+  auto guarded = [&](std::size_t i) {
+    try {
+      work(i);
+    } catch (...) {
+      errors[i] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t i = 1; i < count; ++i) pool.emplace_back(guarded, i);
+  if (count > 0) guarded(0);
+  for (auto& t : pool) t.join();
+  for (const auto& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+}
+
+}  // namespace implicitizer
