@@ -117,22 +117,9 @@ ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeOptions
   return result;
 }
 
-// The interpolation route (interpolation.hpp), which verifies what it returns.
-ImplicitizeResult by_interpolation(const Parametrization& p, const Budget& budget) {
-  InterpolationOptions interpolation;
-  interpolation.budget = budget;
-  InterpolationResult answer = implicitize_by_interpolation(p, interpolation);
-  ImplicitizeResult result;
-  result.implicit = std::move(answer.implicit);
-  result.method = "interpolation";
-  result.verified = true;  // by substitution inside the route, which returns nothing else
-  result.verify_ms = answer.stats.verify_ms;
-  result.interpolation_stats = answer.stats;
-  return result;
-}
-
-// The interpolation route limited to degrees ≤ max_degree: nullopt when the degree
-// is proven higher.
+// The interpolation route (interpolation.hpp) limited to degrees ≤ max_degree:
+// nullopt when the degree is proven higher (never with the default, the largest
+// degree there is). The route verifies what it returns.
 std::optional<ImplicitizeResult> by_interpolation_up_to(const Parametrization& p, std::int32_t max_degree,
                                                         const Budget& budget) {
   InterpolationOptions interpolation;
@@ -142,10 +129,15 @@ std::optional<ImplicitizeResult> by_interpolation_up_to(const Parametrization& p
   ImplicitizeResult result;
   result.implicit = std::move(answer->implicit);
   result.method = "interpolation";
-  result.verified = true;  // as in by_interpolation
+  result.verified = true;  // by substitution inside the route, which returns nothing else
   result.verify_ms = answer->stats.verify_ms;
   result.interpolation_stats = answer->stats;
   return result;
+}
+
+// The whole interpolation route.
+ImplicitizeResult by_interpolation(const Parametrization& p, const Budget& budget) {
+  return *by_interpolation_up_to(p, kMaxTotalDegree, budget);
 }
 
 // The Gröbner route modulo primes: the elimination ideal's basis lifted alone, and

@@ -72,8 +72,8 @@ struct ImplicitizeResult {
   std::int32_t map_degree = 0;
   // The scripts that recompute the elimination in Singular and Macaulay2 are not
   // here: they depend on the parametrization alone (reproduce_scripts()), and
-  // printing them is output, not elimination (10–30 µs, a fifth of a small
-  // surface's answer), so the codec makes them when it writes an answer.
+  // printing them is output, not elimination (10–30 µs on a small surface,
+  // docs/benchmarks.md), so the codec makes them when it writes an answer.
 };
 
 /// The implicit equation of the image (a surface f(x, y, z) = 0 for three

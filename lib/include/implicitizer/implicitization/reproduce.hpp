@@ -23,8 +23,8 @@ struct ReproduceScripts {
   std::string macaulay2;  ///< macaulay2_script()
 };
 
-/// Both scripts from one printing of the ideal (what every answer carries: half the
-/// cost of the two calls, which on a small surface is a tenth of the answer's time).
+/// Both scripts from one printing of the ideal (what every answer carries; one
+/// printing instead of the two of singular_script() and macaulay2_script()).
 ReproduceScripts reproduce_scripts(const Parametrization& parametrization);
 
 }  // namespace implicitizer
