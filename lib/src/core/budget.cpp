@@ -35,10 +35,77 @@ Budget& Budget::set_max_terms(std::size_t terms) {
   return *this;
 }
 
+Budget& Budget::set_max_memory(std::size_t bytes) {
+  memory_ = bytes == 0 ? nullptr : std::make_shared<MemoryAccount>(bytes);
+  return *this;
+}
+
+Budget& Budget::set_max_work(std::uint64_t units) {
+  max_work_ = units;
+  work_ = units == 0 ? nullptr : std::make_shared<std::atomic<std::uint64_t>>(0);
+  return *this;
+}
+
+void Budget::charge_work(std::uint64_t units, const char* where) const {
+  if (!work_) return;
+  const std::uint64_t done = work_->fetch_add(units, std::memory_order_relaxed) + units;
+  if (done > max_work_) {
+    std::ostringstream msg;
+    msg << "work allowance of " << max_work_ << " units spent during " << where;
+    throw LimitExceeded(Limit::work, msg.str());
+  }
+}
+
+Budget& Budget::set_max_variables(std::size_t variables) {
+  max_variables_ = variables;
+  return *this;
+}
+
+Budget& Budget::set_max_polynomials(std::size_t polynomials) {
+  max_polynomials_ = polynomials;
+  return *this;
+}
+
+namespace {
+
+[[noreturn]] void throw_count_limit(std::size_t count, const char* unit, const char* what, std::size_t limit) {
+  std::ostringstream msg;
+  msg << what << " has " << count << " " << unit << "; the limit is " << limit;
+  throw LimitExceeded(Limit::size, msg.str());
+}
+
+constexpr double kMiB = 1024.0 * 1024.0;
+
+[[noreturn]] void throw_memory_limit(const MemoryAccount& account, const char* where) {
+  std::ostringstream msg;
+  msg.precision(3);
+  msg << "memory limit of " << static_cast<double>(account.limit_bytes()) / kMiB << " MiB exceeded during " << where
+      << " (the computation held " << static_cast<double>(account.peak_bytes()) / kMiB << " MiB)";
+  throw LimitExceeded(Limit::memory, msg.str());
+}
+
+}  // namespace
+
+void Budget::rethrow_bad_alloc(const char* where) const {
+  if (memory_ && memory_->exceeded()) throw_memory_limit(*memory_, where);
+  throw;
+}
+
+void Budget::check_variables(std::size_t count, const char* what) const {
+  if (max_variables_ != 0 && count > max_variables_) throw_count_limit(count, "variables", what, max_variables_);
+}
+
+void Budget::check_polynomials(std::size_t count, const char* what) const {
+  if (max_polynomials_ != 0 && count > max_polynomials_) {
+    throw_count_limit(count, "polynomials", what, max_polynomials_);
+  }
+}
+
 void Budget::check(const char* where) const {
   if (is_cancelled()) {
     throw LimitExceeded(Limit::cancelled, std::string("computation cancelled during ") + where);
   }
+  if (memory_ && memory_->exceeded()) throw_memory_limit(*memory_, where);
   if (has_deadline_ && Clock::now() > deadline_) {
     std::ostringstream msg;
     msg << "time limit of " << timeout_seconds_ << " s exceeded during " << where;

@@ -8,6 +8,10 @@ const char* to_string(Limit limit) {
       return "time";
     case Limit::size:
       return "size";
+    case Limit::memory:
+      return "memory";
+    case Limit::work:
+      return "work";
     case Limit::cancelled:
       return "cancelled";
   }

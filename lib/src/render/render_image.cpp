@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/core/memory_account.hpp"
 
 namespace implicitizer {
 namespace {
@@ -154,7 +155,13 @@ RenderResult render_image(const RenderTarget& target, const RenderSettings& sett
   std::vector<WorkerStats> stats(threads);
   std::vector<std::thread> workers;
   workers.reserve(threads - 1);
-  for (std::size_t i = 1; i < threads; ++i) workers.emplace_back([&, i] { renderer.run_worker(stats[i]); });
+  MemoryAccount* const account = current_memory_account();
+  for (std::size_t i = 1; i < threads; ++i) {
+    workers.emplace_back([&, i] {
+      const MemoryScope scope(account);
+      renderer.run_worker(stats[i]);
+    });
+  }
   renderer.run_worker(stats[0]);  // the calling thread works too
   for (std::thread& w : workers) w.join();
   renderer.rethrow_error();

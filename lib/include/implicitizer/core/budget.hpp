@@ -1,21 +1,26 @@
 #pragma once
 /// \file
-/// One object that every long loop consults: wall time, size, cancellation.
-/// Modelled on FLINT's `_with_limits` functions and mathicgb's stop callback:
-/// the loop calls `check()` and the budget throws LimitExceeded naming the limit.
+/// One object that every long loop consults: wall time, size, memory, work,
+/// cancellation. Modelled on FLINT's `_with_limits` functions and mathicgb's stop
+/// callback: the loop calls `check()` and the budget throws LimitExceeded naming the
+/// limit.
 
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <new>
 #include <string>
 
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/core/memory_account.hpp"
 
 namespace implicitizer {
 
-/// Limits of one computation. Copies share the cancellation flag, so a server can
-/// cancel work it handed to another thread.
+/// Limits of one computation. Copies share the cancellation flag, the memory account
+/// and the work counter, so a server can cancel work it handed to another thread and
+/// every thread of one computation draws on one allowance.
 class Budget {
  public:
   using Clock = std::chrono::steady_clock;
@@ -35,17 +40,62 @@ class Budget {
   /// The timeout given at construction, in seconds (0 = none); for messages.
   double timeout_seconds() const { return timeout_seconds_; }
 
+  /// Gives the computation a memory account of `bytes` (0 = none). The threads that
+  /// compute must be attached to it (MemoryScope(memory_account())) for it to count.
+  Budget& set_max_memory(std::size_t bytes);
+  /// The memory limit in bytes (0 = none).
+  std::size_t max_memory() const { return memory_ ? memory_->limit_bytes() : 0; }
+  /// The memory account (null when there is no memory limit).
+  MemoryAccount* memory_account() const { return memory_.get(); }
+
+  /// Starts a fresh work allowance of `units` (0 = none) for this budget and the
+  /// copies made from it afterwards. Work is counted by the loops that charge_work():
+  /// a unit is one term, or one limb of a coefficient, written by a reduction. Unlike
+  /// wall time it does not depend on the machine's load, so a decision taken on it
+  /// (auto's head starts) is the same on every run.
+  Budget& set_max_work(std::uint64_t units);
+  /// The work allowance (0 = none).
+  std::uint64_t max_work() const { return max_work_; }
+  /// Adds `units` to the work done; throws LimitExceeded (work) naming `where` once it
+  /// passes the allowance. One relaxed atomic add.
+  void charge_work(std::uint64_t units, const char* where) const;
+  /// The work charged since set_max_work() (0 without an allowance).
+  std::uint64_t work_done() const { return work_ ? work_->load(std::memory_order_relaxed) : 0; }
+
+  /// Caps on what a request states, checked before any algebra (0 = none): the
+  /// variables of a ring (identifiers of a request) and the polynomials of an ideal.
+  /// Sets the variables cap (0 = none).
+  Budget& set_max_variables(std::size_t variables);
+  /// The variables cap (0 = none).
+  std::size_t max_variables() const { return max_variables_; }
+  /// Sets the polynomials cap (0 = none).
+  Budget& set_max_polynomials(std::size_t polynomials);
+  /// The polynomials cap (0 = none).
+  std::size_t max_polynomials() const { return max_polynomials_; }
+  /// Throws LimitExceeded (size) naming `what` and the cap if `count` variables pass
+  /// max_variables().
+  void check_variables(std::size_t count, const char* what) const;
+  /// Throws LimitExceeded (size) naming `what` and the cap if `count` polynomials pass
+  /// max_polynomials().
+  void check_polynomials(std::size_t count, const char* what) const;
+
   /// Asks every holder of this budget (or a copy) to stop at its next check.
   void cancel() const { cancelled_->store(true, std::memory_order_relaxed); }
   /// Whether cancel() was called.
   bool is_cancelled() const { return cancelled_->load(std::memory_order_relaxed); }
 
-  /// Throws LimitExceeded (time or cancelled) naming `where` if the budget is spent.
-  /// Cheap: one relaxed load and one clock read.
+  /// Throws LimitExceeded (cancelled, memory or time) naming `where` if the budget is
+  /// spent. Cheap: two relaxed loads and one clock read.
   void check(const char* where) const;
   /// Throws LimitExceeded (size) naming `where` if `terms` exceeds the term limit,
   /// then does check(where).
   void check_terms(std::size_t terms, const char* where) const;
+
+  /// Called while a std::bad_alloc is being handled: throws LimitExceeded (memory)
+  /// naming `where` when this budget's memory account refused the allocation
+  /// (memory_account.hpp), else rethrows the bad_alloc (the machine's memory itself
+  /// ran out).
+  [[noreturn]] void rethrow_bad_alloc(const char* where) const;
 
   /// Seconds left before the deadline (infinity when there is none).
   double seconds_left() const;
@@ -55,7 +105,26 @@ class Budget {
   Clock::time_point deadline_{};
   double timeout_seconds_ = 0;
   std::size_t max_terms_ = 0;
+  std::size_t max_variables_ = 0;
+  std::size_t max_polynomials_ = 0;
+  std::uint64_t max_work_ = 0;
+  std::shared_ptr<std::atomic<std::uint64_t>> work_;  // null without an allowance
+  std::shared_ptr<MemoryAccount> memory_;             // null without a memory limit
   std::shared_ptr<std::atomic<bool>> cancelled_;
 };
+
+/// Runs `compute()` with the calling thread charging `budget`'s memory account
+/// (MemoryScope), an allocation that account refused becoming the budget's
+/// LimitExceeded (memory). A server worker attaches its thread itself; the command
+/// line runs each computation through this.
+template <typename Compute>
+auto compute_charging(const Budget& budget, Compute compute) -> decltype(compute()) {
+  const MemoryScope scope(budget.memory_account());
+  try {
+    return compute();
+  } catch (const std::bad_alloc&) {
+    budget.rethrow_bad_alloc("the computation");
+  }
+}
 
 }  // namespace implicitizer

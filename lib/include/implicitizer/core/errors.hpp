@@ -40,9 +40,16 @@ class InputError : public std::runtime_error {
 };
 
 /// Which limit of a Budget stopped a computation.
-enum class Limit { time, size, cancelled };
+enum class Limit {
+  time,       ///< the wall-time deadline
+  size,       ///< the term limit, or a count stated up front (variables, polynomials)
+  memory,     ///< the bytes the computation's threads hold (MemoryAccount)
+  work,       ///< the work allowance of one try (auto's head starts); callers that set
+              ///< one catch it, so it never reaches a user
+  cancelled,  ///< Budget::cancel(): a client left, or the server shuts down
+};
 
-/// Returns "time", "size" or "cancelled".
+/// Returns "time", "size", "memory", "work" or "cancelled".
 const char* to_string(Limit limit);
 
 /// A computation stopped because its Budget ran out. `where` names the loop

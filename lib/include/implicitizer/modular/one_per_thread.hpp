@@ -10,15 +10,19 @@
 #include <thread>
 #include <vector>
 
+#include "implicitizer/core/memory_account.hpp"
+
 namespace implicitizer {
 
 /// Runs work(0), …, work(count − 1) concurrently, work(0) on the calling thread;
 /// returns when all have ended, rethrowing the exception of the lowest-numbered job
-/// that threw.
+/// that threw. Every thread charges its memory to the calling thread's account.
 template <typename Work>
 void run_one_per_thread(std::size_t count, const Work& work) {
   std::vector<std::exception_ptr> errors(count);
+  MemoryAccount* const account = current_memory_account();
   auto guarded = [&](std::size_t i) {
+    const MemoryScope scope(account);
     try {
       work(i);
     } catch (...) {
