@@ -279,8 +279,9 @@ TEST(BuchbergerBudgetTest, TimeoutStopsWithTimeLimit) {
   params.budget = Budget::with_timeout(0.02);
   const auto start = std::chrono::steady_clock::now();
   EXPECT_EQ(stopping_limit(params), Limit::time);
-  // It stopped soon after the deadline, not at the end of the computation.
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
+  // It stopped soon after the deadline, not at the end of the computation (minutes):
+  // the bound leaves room for a loaded machine.
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
 }
 
 TEST(BuchbergerBudgetTest, TermLimitStopsWithSizeLimit) {
@@ -308,7 +309,7 @@ TEST(BuchbergerBudgetTest, CancelFromAnotherThreadStopsWithCancelled) {
   const std::optional<Limit> limit = stopping_limit(params);
   canceller.join();
   EXPECT_EQ(limit, Limit::cancelled);
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
 }
 
 // Limits that are never reached change nothing.

@@ -138,7 +138,7 @@ TEST(EliminationTest, RandomIdealsSatisfyTheEliminationTheorem) {
     for (const MonomialOrder& remaining : {MonomialOrder::grevlex(), MonomialOrder::lex(), MonomialOrder::grlex()}) {
       SCOPED_TRACE(remaining.name());
       BuchbergerParams bounded;
-      bounded.budget = Budget::with_timeout(testing::kSmallIdealSeconds);
+      bounded.budget = testing::small_ideal_budget();
       const EliminationResult r = eliminate(generators, std::vector<std::string>{"x"}, bounded, remaining);
       EXPECT_TRUE(is_reduced(r.groebner.basis));
       EXPECT_TRUE(is_groebner(r.groebner.basis));

@@ -9,6 +9,19 @@
 
 namespace implicitizer {
 
+namespace {
+
+// Units of work a millisecond: the median over the benchmark ideals of
+// BuchbergerStats::work / elapsed_ms (docs/algorithms.md, "Head starts in units of
+// work", has the command that measures it).
+constexpr double kWorkPerMillisecond = 350000;
+
+}  // namespace
+
+std::uint64_t buchberger_work_of_milliseconds(double ms) {
+  return static_cast<std::uint64_t>(ms * kWorkPerMillisecond);
+}
+
 GroebnerResult compute_groebner_basis(std::span<const Polynomial> generators, const BuchbergerParams& params) {
   if (generators.empty()) return GroebnerResult{};
   const RingPtr& ring = generators.front().ring();

@@ -47,6 +47,7 @@ class BuchbergerEngine {
   // with its input as the basis). Returns true otherwise.
   bool run(std::vector<Poly> generators, Outcome& out, bool stop_at_nonzero = false) {
     for (auto& g : generators) {
+      params_.budget.check("Buchberger's algorithm (the generators)");
       if (g.empty()) continue;
       if (is_constant(g)) {
         out.unit = true;
@@ -63,15 +64,19 @@ class BuchbergerEngine {
       Poly s = arithmetic_.s_polynomial(polynomials_[pair.i], polynomials_[pair.j]);
       std::int32_t sugar = pair.sugar;
       ReductionCounters counters;
+      counters.work = kWorkPerTerm * s.size();
+      params_.budget.charge_work(counters.work, "Buchberger's algorithm");
       Poly h = arithmetic_.reduce(std::move(s), reducers_, false, params_.budget, counters, &sugar);
       if (!h.empty() && stop_at_nonzero) {
         stats_.reduction_steps += counters.steps;
+        stats_.work += counters.work;
         return false;
       }
       if (!h.empty() && params_.tail_reduce) {
         h = arithmetic_.reduce(std::move(h), reducers_, true, params_.budget, counters, &sugar);
       }
       stats_.reduction_steps += counters.steps;
+      stats_.work += counters.work;
       if (h.empty()) {
         ++stats_.zero_reductions;
         continue;

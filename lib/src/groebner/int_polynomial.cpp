@@ -96,6 +96,14 @@ void combine(const Ring& ring, const Integer& fa, IntPolynomial& f, std::size_t 
   }
 }
 
+// The work of writing `p` (reducer.hpp's units): its terms and their limbs. Counting
+// limbs keeps a unit near one cost on huge coefficients (10^100000 is 5 200 limbs).
+std::uint64_t written_work(const IntPolynomial& p) {
+  std::uint64_t limbs = 0;
+  for (const Integer& c : p.coefficients) limbs += mpz_size(c.get_mpz_t());
+  return kWorkPerTerm * p.size() + kWorkPerLimb * limbs;
+}
+
 }  // namespace
 
 IntPolynomial reduce(const Ring& ring, IntPolynomial f, const std::vector<Reducer>& reducers, bool full,
@@ -127,10 +135,14 @@ IntPolynomial reduce(const Ring& ring, IntPolynomial f, const std::vector<Reduce
     combine(ring, fa, f, start + 1, ga, shift.data(), g, 1, scratch);
     std::swap(f, scratch);
     start = 0;
+    std::uint64_t work = kWorkPerStep + written_work(f);
     if (fa != 1) {
       for (auto& c : done.coefficients) c *= fa;
+      work += written_work(done);
     }
     ++counters.steps;
+    counters.work += work;
+    budget.charge_work(work, "Groebner basis reduction");
     // Coefficients grow by a factor lc(g) per step; dividing out the content now and
     // then keeps them near the size of the true remainder's. The finished part `done`
     // was scaled by the same factors, so the content is taken over both together:

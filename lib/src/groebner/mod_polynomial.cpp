@@ -118,6 +118,9 @@ ModPolynomial ModularArithmetic::reduce(ModPolynomial f, const std::vector<Basic
     std::swap(f, scratch);
     start = 0;
     ++counters.steps;
+    const std::uint64_t work = kWorkPerStep + kWorkPerModularTerm * f.size();
+    counters.work += work;
+    budget.charge_work(work, "Groebner basis reduction modulo a prime");
     budget.check_terms(f.size() + done.size(), "Groebner basis reduction modulo a prime");
   }
   if (full) {

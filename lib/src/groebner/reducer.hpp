@@ -18,8 +18,20 @@ struct BasicReducer {
 };
 
 // Counters updated by the reductions.
+// Budget::charge_work's units, chosen so that a unit costs about the same time
+// whatever the coefficients (docs/algorithms.md, "Head starts in units of work",
+// measures the spread): a term written costs its monomial's arithmetic and an
+// allocation, far more than one limb of its coefficient; a reduction step costs the
+// search for its reducer; a pair examined by a criterion, a few monomial comparisons.
+inline constexpr std::uint64_t kWorkPerTerm = 32;
+inline constexpr std::uint64_t kWorkPerLimb = 1;
+inline constexpr std::uint64_t kWorkPerStep = 64;
+inline constexpr std::uint64_t kWorkPerModularTerm = 4;
+inline constexpr std::uint64_t kWorkPerPairExamined = 2;
+
 struct ReductionCounters {
   std::size_t steps = 0;
+  std::uint64_t work = 0;  // Budget::charge_work units: terms and coefficient limbs written
 };
 
 // The reducer used for monomial m: among those whose leading monomial divides m, the

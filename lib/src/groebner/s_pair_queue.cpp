@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "reducer.hpp"
+
 namespace implicitizer::detail {
 
 bool SPairQueue::before(const SPair& a, const SPair& b) const {
@@ -32,6 +34,15 @@ void SPairQueue::push(SPair pair) {
   std::push_heap(heap_.begin(), heap_.end(), [this](const SPair& a, const SPair& b) { return before(b, a); });
 }
 
+void SPairQueue::examined(std::size_t& steps) const {
+  // Every 4096 pairs examined: the criteria are quadratic in the basis, and on an
+  // ideal of 30 000 generators one update alone takes seconds.
+  if ((++steps & 0xfff) == 0) {
+    params_.budget.charge_work(kWorkPerPairExamined * 0x1000, "the S-pair criteria");
+    params_.budget.check("the S-pair criteria");
+  }
+}
+
 void SPairQueue::add_element(std::vector<BasisEntry>& basis, std::size_t t) {
   if (params_.chain_criterion == ChainCriterion::gebauer_moller) {
     update_gebauer_moller(basis, t);
@@ -39,7 +50,9 @@ void SPairQueue::add_element(std::vector<BasisEntry>& basis, std::size_t t) {
   }
   // Plain pair creation: every earlier element pairs with t; only the product
   // criterion filters here (Buchberger's chain criterion acts at selection time).
+  std::size_t steps = 0;
   for (std::size_t i = 0; i < t; ++i) {
+    examined(steps);
     SPair p = make_pair(basis, i, t);
     if (params_.product_criterion && ring_.coprime(basis[i].lead(), basis[t].lead())) {
       ++stats_.product_criterion;
@@ -56,8 +69,10 @@ void SPairQueue::add_element(std::vector<BasisEntry>& basis, std::size_t t) {
 //     differ from lcm(i,j): its S-polynomial reduces to zero through the chain i–t–j.
 // Correctness rests on Buchberger's criteria; every dropped pair is counted.
 void SPairQueue::update_gebauer_moller(std::vector<BasisEntry>& basis, std::size_t t) {
+  std::size_t steps = 0;
   std::vector<SPair> fresh;
   for (std::size_t i = 0; i < t; ++i) {
+    examined(steps);
     if (!basis[i].redundant) fresh.push_back(make_pair(basis, i, t));
   }
   const auto coprime = [&](const SPair& p) {
@@ -73,9 +88,11 @@ void SPairQueue::update_gebauer_moller(std::vector<BasisEntry>& basis, std::size
     bool drop = false;
     if (!coprime(fresh[a])) {
       for (std::size_t b = 0; b < fresh.size() && !drop; ++b) {
+        examined(steps);
         if (!taken[b] && ring_.divides(fresh[b].lcm.data() + 0, fresh[a].lcm.data())) drop = true;
       }
       for (std::size_t b = 0; b < kept.size() && !drop; ++b) {
+        examined(steps);
         if (ring_.divides(kept[b].lcm.data(), fresh[a].lcm.data())) drop = true;
       }
     }
@@ -90,6 +107,7 @@ void SPairQueue::update_gebauer_moller(std::vector<BasisEntry>& basis, std::size
   const std::size_t w = ring_.monomial_size();
   std::vector<std::int32_t> lit(w), ljt(w);
   for (auto& p : heap_) {
+    examined(steps);
     if (!p.alive || !ring_.divides(lt, p.lcm.data())) continue;
     ring_.lcm(basis[p.i].lead(), lt, lit.data());
     ring_.lcm(basis[p.j].lead(), lt, ljt.data());
@@ -110,6 +128,7 @@ void SPairQueue::update_gebauer_moller(std::vector<BasisEntry>& basis, std::size
   }
   // Elements whose leading monomial lm(t) divides need no new pairs any more.
   for (std::size_t i = 0; i < t; ++i) {
+    examined(steps);
     if (!basis[i].redundant && ring_.divides(lt, basis[i].lead())) basis[i].redundant = true;
   }
 }
@@ -120,7 +139,9 @@ void SPairQueue::update_gebauer_moller(std::vector<BasisEntry>& basis, std::size
 // only one of S(i,k), S(j,k) to reduce to zero, which is not enough: the proof
 // rewrites S(i,j) through both.
 bool SPairQueue::buchberger_chain_applies(const std::vector<BasisEntry>& basis, const SPair& p) const {
+  std::size_t steps = 0;
   for (std::size_t k = 0; k < basis.size(); ++k) {
+    examined(steps);
     if (k == p.i || k == p.j) continue;
     if (!ring_.divides(basis[k].lead(), p.lcm.data())) continue;
     if (pending_.count(key(p.i, k)) || pending_.count(key(p.j, k))) continue;

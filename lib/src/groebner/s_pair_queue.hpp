@@ -54,6 +54,9 @@ class SPairQueue {
   SPair make_pair(const std::vector<BasisEntry>& basis, std::size_t i, std::size_t t);
   void push(SPair pair);
   void update_gebauer_moller(std::vector<BasisEntry>& basis, std::size_t t);
+  // Counts one pair or element examined by a criterion; every few thousand, charges
+  // them as work and checks the budget.
+  void examined(std::size_t& steps) const;
   bool buchberger_chain_applies(const std::vector<BasisEntry>& basis, const SPair& p) const;
   static std::uint64_t key(std::size_t i, std::size_t j) {
     return (std::uint64_t{std::min(i, j)} << 32) | std::max(i, j);

@@ -161,6 +161,8 @@ void write_stats_members(Writer& w, const BuchbergerStats& s) {
   w.Uint64(s.zero_reductions);
   write_key(w, "reduction_steps");
   w.Uint64(s.reduction_steps);
+  write_key(w, "work");
+  w.Uint64(s.work);
   write_key(w, "max_degree");
   w.Int(s.max_degree);
   write_key(w, "basis_size");
@@ -761,6 +763,10 @@ const char* limit_error_code(Limit limit) {
       return "time_limit_exceeded";
     case Limit::size:
       return "size_limit_exceeded";
+    case Limit::memory:
+      return "memory_limit_exceeded";
+    case Limit::work:
+      return "work_limit_exceeded";
     case Limit::cancelled:
       return "cancelled";
   }
