@@ -1,11 +1,11 @@
 #include "implicitizer/implicitization/implicitize.hpp"
 
 #include <chrono>
-#include <cstdio>
 #include <span>
 #include <stdexcept>
 
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/core/try_within.hpp"
 #include "implicitizer/groebner/elimination.hpp"
 #include "implicitizer/implicitization/reproduce.hpp"
 #include "implicitizer/implicitization/verify.hpp"
@@ -30,7 +30,8 @@ ImplicitizationMethod parse_implicitization_method(const std::string& name) {
   if (name == "groebner") return ImplicitizationMethod::groebner;
   if (name == "resultant") return ImplicitizationMethod::resultant;
   if (name == "interpolation") return ImplicitizationMethod::interpolation;
-  throw InputError("unknown_method", "unknown method '" + name + "' (expected auto, groebner, resultant or interpolation)");
+  throw InputError("unknown_method",
+                   "unknown method '" + name + "' (expected auto, groebner, resultant or interpolation)");
 }
 
 namespace {
@@ -80,7 +81,8 @@ ImplicitizationIdeal implicitization_ideal(const Parametrization& p) {
   for (std::size_t v = 0; v < n; ++v) {
     const auto& c = p.coordinates[v];
     const Polynomial space_variable = Polynomial::variable(ring, offset + k + v);
-    generators.push_back(c.denominator().map_to(ring, param_map) * space_variable - c.numerator().map_to(ring, param_map));
+    generators.push_back(c.denominator().map_to(ring, param_map) * space_variable -
+                         c.numerator().map_to(ring, param_map));
   }
   if (saturate) {
     generators.push_back(Polynomial::constant(ring, Rational(1)) -
@@ -101,11 +103,11 @@ ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeOptions
     const std::string space = n == 3 ? "space" : "the plane";
     const std::string kind = n == 3 ? "a surface" : "a curve";
     if (gens.empty()) {
-      throw NoSingleEquation("no implicit equation: the image is dense in " + space + " (the elimination ideal is zero)",
-                             printed);
+      throw NoSingleEquation(
+          "no implicit equation: the image is dense in " + space + " (the elimination ideal is zero)", printed);
     }
-    throw NoSingleEquation("no single implicit equation: the image is not " + kind +
-                               " (the elimination ideal needs " + std::to_string(gens.size()) + " generators)",
+    throw NoSingleEquation("no single implicit equation: the image is not " + kind + " (the elimination ideal needs " +
+                               std::to_string(gens.size()) + " generators)",
                            printed);
   }
 
@@ -253,17 +255,20 @@ std::optional<ImplicitizeResult> by_resultant(const Parametrization& p, const Bu
   return by_resultant(p, plan, budget, stats);
 }
 
-// Buchberger under a deadline `seconds` from now (or the caller's, if sooner):
-// nullopt when that deadline stops it, the caller's own limits still throw.
+// Buchberger within a work allowance of `work` units (Budget::charge_work): nullopt
+// when the allowance stops it, and when the term limit does (the routes that follow
+// may fit it: interpolation's kernels have one term per column). The caller's own
+// deadline, memory limit and cancellation still throw.
 std::optional<ImplicitizeResult> groebner_within(const Parametrization& p, const ImplicitizeOptions& options,
-                                                 double seconds) {
-  ImplicitizeOptions trial = options;
-  trial.groebner.budget.set_timeout(std::min(seconds, options.groebner.budget.seconds_left()));
+                                                 std::uint64_t work) {
   try {
-    return by_groebner(p, trial);
-  } catch (const LimitExceeded&) {
-    const Budget& caller = options.groebner.budget;
-    if (caller.is_cancelled() || caller.seconds_left() <= 0) throw;
+    return try_within(options.groebner.budget, work, [&](const Budget& trial) {
+      ImplicitizeOptions limited = options;
+      limited.groebner.budget = trial;
+      return by_groebner(p, limited);
+    });
+  } catch (const LimitExceeded& e) {
+    if (e.limit() != Limit::size) throw;
     return std::nullopt;
   }
 }
@@ -290,11 +295,11 @@ constexpr std::int32_t kInterpolationOverMacaulay = 9;
 // (docs/benchmarks.md); the lower end keeps the head start short.
 constexpr double kInterpolationShareOfMacaulay = 0.4;
 
-// Buchberger's head start before interpolation when there is no resultant: the
-// sparse public surfaces finish within it (whitney_umbrella 0.19 ms, bicubic_graph
-// 0.36 ms, cone_rational 0.42 ms), the denser ones do not (torus 3.4 ms, Steiner
-// 2.7 ms; interpolation answers them in 0.76 and 0.90 ms).
-constexpr double kBaseHeadStartSeconds = 0.0005;
+// Buchberger's head start before interpolation when there is no resultant, in
+// milliseconds of Buchberger's work: the sparse public surfaces finish within it
+// (whitney_umbrella, bicubic_graph, cone_rational), the denser ones do not (the torus,
+// Steiner's surface), which interpolation answers faster (docs/algorithms.md, rule 6).
+constexpr double kBaseHeadStartMs = 0.5;
 
 }  // namespace
 
@@ -314,10 +319,10 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
   }
   if (options.method == ImplicitizationMethod::resultant) {
     if (!resultant_applies) {
-      throw InputError("method_not_applicable",
-                       "the resultant method needs " + std::to_string(coordinates - 1) + " parameter" +
-                           (coordinates == 2 ? "" : "s") + " for " + std::to_string(coordinates) +
-                           " coordinates (this has " + std::to_string(parameters) + ")");
+      throw InputError("method_not_applicable", "the resultant method needs " + std::to_string(coordinates - 1) +
+                                                    " parameter" + (coordinates == 2 ? "" : "s") + " for " +
+                                                    std::to_string(coordinates) + " coordinates (this has " +
+                                                    std::to_string(parameters) + ")");
     }
     auto result = by_resultant(p, budget, probe);
     if (!result && probe && probe->matrix_too_large && !(probe->dixon_vanishes && probe->macaulay_vanishes)) {
@@ -373,7 +378,7 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
     // ≤ 9) or the resultant runs.
     // Before the probe (1–3 ms on a dense triangular patch: bicubic_graph's 153×153
     // Macaulay matrix), Buchberger's short head start answers the sparse ideals.
-    if (auto quick = groebner_within(p, options, kBaseHeadStartSeconds)) {
+    if (auto quick = groebner_within(p, options, buchberger_work_of_milliseconds(kBaseHeadStartMs))) {
       quick->route = "groebner: Buchberger finished within its head start, before the resultant's probe";
       finish(*quick, p, budget, start);
       return *quick;
@@ -390,13 +395,12 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
       const bool interpolation_next = implicit_degree_bound(p) <= kInterpolationOverMacaulay;
       const double next_seconds = plan.predicted_operations() * kSecondsPerOperation *
                                   (interpolation_next ? kInterpolationShareOfMacaulay : 1.0);
-      const double head_start = std::max(0.002, 0.5 * next_seconds);
+      const double head_start_ms = std::max(2.0, 0.5 * next_seconds * 1000);
+      const std::uint64_t head_start = buchberger_work_of_milliseconds(head_start_ms);
       if (auto quick = groebner_within(p, options, head_start)) {
         quick->resultant_stats = probe;
-        char ms[32];
-        std::snprintf(ms, sizeof ms, "%.1f", head_start * 1000);
-        quick->route = std::string("groebner: finished within its head start of ") + ms + " ms before " +
-                       (interpolation_next ? "interpolation" : "Macaulay's resultant");
+        quick->route = "groebner: finished within its head start of " + std::to_string(head_start) +
+                       " work units before " + (interpolation_next ? "interpolation" : "Macaulay's resultant");
         finish(*quick, p, budget, start);
         return *quick;
       }
@@ -404,8 +408,9 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
         try {
           ImplicitizeResult result = by_interpolation(p, budget);
           result.resultant_stats = probe;
-          result.route = "interpolation: Buchberger did not finish within its head start, and below degree 10 "
-                         "interpolation is faster than Macaulay's resultant";
+          result.route =
+              "interpolation: Buchberger did not finish within its head start, and below degree 10 "
+              "interpolation is faster than Macaulay's resultant";
           finish(result, p, budget, start);
           return result;
         } catch (const LimitExceeded& e) {
@@ -430,7 +435,7 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
     // Buchberger's (whitney_umbrella 0.19 ms, bicubic_graph 0.36 ms, against 0.41 and
     // 2.1 ms by interpolation), denser ones interpolation's (the torus 0.76 ms and
     // Steiner's surface 0.90 ms, against 3.4 and 2.7 ms), and only running tells
-    // them apart: Buchberger gets a head start of kBaseHeadStartSeconds, then
+    // them apart: Buchberger gets a head start of kBaseHeadStartMs, then
     // interpolation runs; where its matrix would be too large, the modular
     // elimination; and Buchberger over ℚ with the whole budget where neither proves
     // an answer (it also lists the generators of an ideal that is not principal).
@@ -438,7 +443,7 @@ ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions
                                               : "the resultant needs one parameter fewer than coordinates";
     // (With two parameters Buchberger already had its head start before the probe.)
     if (!(resultant_applies && coordinates == 3)) {
-      if (auto quick = groebner_within(p, options, kBaseHeadStartSeconds)) {
+      if (auto quick = groebner_within(p, options, buchberger_work_of_milliseconds(kBaseHeadStartMs))) {
         quick->route = "groebner: " + why + "; Buchberger finished within its head start";
         finish(*quick, p, budget, start);
         return *quick;

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/core/try_within.hpp"
 #include "implicitizer/groebner/elimination.hpp"
 #include "implicitizer/polynomial/expression.hpp"
 #include "implicitizer/polynomial/monomial_order.hpp"
@@ -55,8 +56,8 @@ GroebnerMethod method_of(const GroebnerRequest& request) {
 // What computes a basis: `buchberger(params)` over ℚ, `modular(modular_params,
 // stats)` modulo primes; `auto` gives Buchberger a head start.
 template <class Buchberger, class Modular>
-auto compute_with(GroebnerMethod method, const BuchbergerParams& params, GroebnerAnswer& answer,
-                  Buchberger buchberger, Modular modular) {
+auto compute_with(GroebnerMethod method, const BuchbergerParams& params, GroebnerAnswer& answer, Buchberger buchberger,
+                  Modular modular) {
   const auto by_modular = [&] {
     ModularGroebnerParams modular_params;
     modular_params.buchberger = params;
@@ -68,16 +69,17 @@ auto compute_with(GroebnerMethod method, const BuchbergerParams& params, Groebne
   };
   if (method == GroebnerMethod::modular) return by_modular();
   if (method == GroebnerMethod::automatic) {
-    BuchbergerParams trial = params;
-    trial.budget.set_timeout(std::min(kBuchbergerHeadStartSeconds, params.budget.seconds_left()));
-    try {
-      auto result = buchberger(trial);
+    // The caller's own limits (its deadline, memory, cancellation, the term limit)
+    // stop everything; only the head start's work allowance hands over.
+    auto quick =
+        try_within(params.budget, buchberger_work_of_milliseconds(kBuchbergerHeadStartMs), [&](const Budget& trial) {
+          BuchbergerParams limited = params;
+          limited.budget = trial;
+          return buchberger(limited);
+        });
+    if (quick) {
       answer.method = "buchberger";
-      return result;
-    } catch (const LimitExceeded& e) {
-      // The caller's own limits (its deadline, cancellation, the term limit) stop
-      // everything; only the head start's deadline hands over.
-      if (e.limit() != Limit::time || params.budget.is_cancelled() || params.budget.seconds_left() <= 0) throw;
+      return std::move(*quick);
     }
     return by_modular();
   }
@@ -93,6 +95,7 @@ GroebnerAnswer answer_groebner_request(const GroebnerRequest& request, Buchberge
     throw InputError("empty_input", "no polynomials given").in_field("polynomials");
   }
   if (request.timeout_seconds) params.budget.set_timeout(*request.timeout_seconds);
+  params.budget.check_polynomials(request.polynomials.size(), "the ideal");
 
   std::vector<std::unique_ptr<Expression>> expressions;
   expressions.reserve(request.polynomials.size());
@@ -109,9 +112,11 @@ GroebnerAnswer answer_groebner_request(const GroebnerRequest& request, Buchberge
 
   // When eliminating, the generators' ring only fixes the order of the remaining
   // variables; eliminate() builds the block ring itself and applies `order` to them.
+  std::vector<std::string> variables = variables_of(request, expressions);
+  params.budget.check_variables(variables.size(), "the ideal");
   RingPtr ring;
   try {
-    ring = Ring::make(variables_of(request, expressions), eliminating ? MonomialOrder::grevlex() : order);
+    ring = Ring::make(std::move(variables), eliminating ? MonomialOrder::grevlex() : order);
   } catch (const InputError& e) {
     throw e.in_field(e.code() == "invalid_order" ? (request.weights ? "weights" : "order") : "variables");
   }

@@ -39,7 +39,9 @@ ResultantAnswer answer_resultant_request(const ResultantRequest& request, Budget
   }
   // Every identifier is a variable of the ring, so the variable must be one of them:
   // a name that occurs nowhere is most likely a typo (`--var s` for t).
-  const RingPtr ring = Ring::make(collect_identifiers(expressions));
+  std::vector<std::string> identifiers = collect_identifiers(expressions);
+  budget.check_variables(identifiers.size(), "the two polynomials");
+  const RingPtr ring = Ring::make(std::move(identifiers));
   const auto var = ring->index_of(request.variable);
   if (!var) {
     throw InputError("unknown_variable", "'" + request.variable + "' occurs in neither polynomial")

@@ -29,13 +29,15 @@ struct GroebnerRequest {
   /// Wall-time limit in seconds; absent or <= 0 means none.
   std::optional<double> timeout_seconds;
   /// `auto` (Buchberger over ℚ first, the proven modular computation if it has not
-  /// finished within kBuchbergerHeadStartSeconds), `buchberger` or `modular`.
+  /// finished within kBuchbergerHeadStartMs of work), `buchberger` or `modular`.
   std::string method = "auto";
 };
 
 /// How long `auto` lets Buchberger's algorithm over ℚ run before it switches to the
-/// modular computation (docs/algorithms.md has the measurements behind it).
-inline constexpr double kBuchbergerHeadStartSeconds = 0.1;
+/// modular computation, in milliseconds of Buchberger's work
+/// (buchberger_work_of_milliseconds: the same allowance on every run, loaded or not;
+/// docs/algorithms.md has the measurements behind it).
+inline constexpr double kBuchbergerHeadStartMs = 100;
 
 /// What a Gröbner request computed.
 struct GroebnerAnswer {
