@@ -113,6 +113,38 @@ std::size_t parse_count(const std::string& text, const char* flag) {
   return static_cast<std::size_t>(n);
 }
 
+std::size_t parse_memory_size(const std::string& text, const char* flag) {
+  std::string t = trim(text);
+  unsigned shift = 20;  // MiB without a suffix
+  if (!t.empty()) {
+    switch (t.back()) {
+      case 'K':
+      case 'k':
+        shift = 10;
+        t.pop_back();
+        break;
+      case 'M':
+      case 'm':
+        t.pop_back();
+        break;
+      case 'G':
+      case 'g':
+        shift = 30;
+        t.pop_back();
+        break;
+      default:
+        break;
+    }
+  }
+  const bool digits = !t.empty() && t.find_first_not_of("0123456789") == std::string::npos;
+  errno = 0;
+  const unsigned long long n = digits ? std::strtoull(t.c_str(), nullptr, 10) : 0;
+  if (!digits || errno == ERANGE || n == 0 || n > (std::numeric_limits<std::size_t>::max() >> shift)) {
+    throw UsageError(std::string("--") + flag + " needs a size such as 512 (MiB), 512M or 2G, not '" + text + "'");
+  }
+  return static_cast<std::size_t>(n) << shift;
+}
+
 int parse_int(const std::string& text, const char* flag) {
   const std::string t = trim(text);
   char* end = nullptr;

@@ -66,6 +66,10 @@ double parse_seconds(const std::string& text, const char* flag);
 /// A non-negative integer that fits std::size_t. Throws UsageError naming `flag` otherwise.
 std::size_t parse_count(const std::string& text, const char* flag);
 
+/// A memory size in bytes from `N` MiB, or `N` followed by K, M or G (KiB, MiB, GiB).
+/// Throws UsageError naming `--flag` unless N is a positive integer and the size fits.
+std::size_t parse_memory_size(const std::string& text, const char* flag);
+
 /// An int (optionally negative). Throws UsageError naming `flag` otherwise.
 int parse_int(const std::string& text, const char* flag);
 

@@ -33,6 +33,9 @@ BuchbergerParams buchberger_params_from(const Arguments& arguments) {
     }
   }
   if (const auto terms = arguments.value("max-terms")) params.budget.set_max_terms(parse_count(*terms, "max-terms"));
+  if (const auto memory = arguments.value("max-memory")) {
+    params.budget.set_max_memory(parse_memory_size(*memory, "max-memory"));
+  }
   return params;
 }
 

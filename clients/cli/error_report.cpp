@@ -2,6 +2,7 @@
 
 #include <exception>
 #include <iostream>
+#include <new>
 
 #include "arguments.hpp"
 #include "implicitizer/codec/json_codec.hpp"
@@ -64,6 +65,13 @@ int run_reporting_errors(const ErrorReport& report, const std::function<void()>&
     return kExitNoSingleEquation;
   } catch (const LimitExceeded& e) {
     report_limit(report, e);
+    return kExitLimit;
+  } catch (const std::bad_alloc&) {
+    // The machine's memory exhausted (one allocation past --max-memory arrives as
+    // LimitExceeded: Budget::rethrow_bad_alloc).
+    report_limit(report, LimitExceeded(Limit::memory,
+                                       "out of memory: the machine has no memory left for this "
+                                       "computation"));
     return kExitLimit;
   } catch (const std::exception& e) {
     if (report.json) std::cout << encode_error("internal_error", "internal error") << '\n';

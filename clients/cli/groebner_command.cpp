@@ -10,6 +10,7 @@
 #include "help.hpp"
 #include "implicitizer/codec/groebner_request.hpp"
 #include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/core/budget.hpp"
 #include "implicitizer/polynomial/printer.hpp"
 
 namespace implicitizer::cli {
@@ -81,7 +82,7 @@ int run_groebner_command(std::span<const std::string> args) {
   }
 
   return run_reporting_errors(report, [&] {
-    const GroebnerAnswer answer = answer_groebner_request(request, std::move(params));
+    const auto answer = compute_charging(params.budget, [&] { return answer_groebner_request(request, params); });
     if (report.json) {
       std::cout << encode_groebner_response(answer) << '\n';
     } else {

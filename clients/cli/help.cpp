@@ -19,13 +19,13 @@ commands:
                [--method auto|groebner|resultant|interpolation] [--timeout SECONDS] [--json]
   implicitizer groebner [--vars x,y,z] [--order lex|grlex|grevlex] [--weights 1,2,3]
                [--eliminate s,t] [--timeout SECONDS] [--json] F [F ...]
-  implicitizer resultant --var t [--timeout SECONDS] [--max-terms N] [--json] F G
+  implicitizer resultant --var t [--timeout SECONDS] [--max-terms N] [--max-memory SIZE] [--json] F G
   implicitizer sdf (--implicit E | --scene FILE.json) [--mode fast|safe] [--box x0,y0,z0,x1,y1,z1] [--name NAME] [--json]
   implicitizer render (--implicit E | --x E --y E --z E [--params s,t] | --scene FILE.json)
                [--method sphere|enhanced|newton|forward_newton|exact] [--mode fast|safe] [--size WxH]
                [--aa N] [--eye x,y,z] [--target x,y,z] [--box ...] [--timeout S] -o FILE.png [--json]
   implicitize and groebner also take --strategy auto|normal|sugar,
-  --criteria gm|seed|product|none, --max-terms N
+  --criteria gm|seed|product|none, --max-terms N, --max-memory SIZE
 
 syntax: numbers are exact (0.25, 1e-30); + - * / ^ (** = ^); ^ binds tightest, so
   -x^2 = -(x^2); 2x is 2*x and binds tighter than * and /, so 1/2x = 1/(2x);
@@ -60,6 +60,8 @@ options:
                         substitution and minimality; Buchberger over Q where not)
   --timeout SECONDS     wall-time limit, > 0 (default: none)
   --max-terms N         largest number of terms of any intermediate polynomial (default 0 = none)
+  --max-memory SIZE     memory the computation may hold: 512 (MiB), 512M, 2G (default: none);
+                        beyond it, exit 5 with memory_limit_exceeded
   --strategy S          S-pair selection: auto (default: sugar for elimination
                         orders, normal otherwise), normal or sugar
   --criteria C          gm (default): product criterion + Gebauer-Moller chain criterion
@@ -89,11 +91,14 @@ options:
                         ideal intersected with the ring of the other variables, under
                         --order); the basis is then computed in an elimination order
                         for s,t (docs/cli.md); --json shows both
-  --method M            auto (default): Buchberger over Q for 0.1 s, then modular;
+  --method M            auto (default): Buchberger over Q for about 0.1 s of its work,
+                        then modular;
                         buchberger; modular: modulo primes, lifted, proven over Q
   --modular             the same as --method modular
   --timeout SECONDS     wall-time limit, > 0 (default: none)
   --max-terms N         largest number of terms of any intermediate polynomial (default 0 = none)
+  --max-memory SIZE     memory the computation may hold: 512 (MiB), 512M, 2G (default: none);
+                        beyond it, exit 5 with memory_limit_exceeded
   --strategy S          auto (default), normal or sugar
   --criteria C          gm (default), seed, product or none (see implicitize --help)
   --json                print the JSON object POST /v1/groebner returns
@@ -116,6 +121,8 @@ options:
   --var t               the variable to eliminate (required); it must occur in F or G
   --timeout SECONDS     wall-time limit, > 0 (default: none)
   --max-terms N         largest number of terms of any intermediate polynomial (default 0 = none)
+  --max-memory SIZE     memory the computation may hold: 512 (MiB), 512M, 2G (default: none);
+                        beyond it, exit 5 with memory_limit_exceeded
   --json                print the JSON object POST /v1/resultant returns
   -h, --help            this text
 
@@ -157,7 +164,8 @@ scene_too_large, invalid_domain, unbounded_patch, no_single_equation: a parametr
 leaf whose image is not a surface), 5 time or size limit.
 )";
 
-const char* const kRenderHelp = R"(usage: implicitizer render (--implicit E | --x E --y E --z E | --scene FILE.json) -o FILE.png [OPTIONS]
+const char* const kRenderHelp =
+    R"(usage: implicitizer render (--implicit E | --x E --y E --z E | --scene FILE.json) -o FILE.png [OPTIONS]
 
 Draws a preview of the surface E = 0, of a parametric surface (implicitized first)
 or of a scene into a PNG: rays marched through the same distance function the GLSL

@@ -10,6 +10,7 @@
 #include "help.hpp"
 #include "implicitizer/codec/implicitize_request.hpp"
 #include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/core/budget.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/polynomial/printer.hpp"
 
@@ -19,7 +20,7 @@ namespace {
 constexpr const char* kCommand = "implicitize";
 
 std::vector<OptionSpec> option_specs() {
-  std::vector<OptionSpec> spec = {{"x", true},      {"y", true},     {"z", true},    {"params", true},
+  std::vector<OptionSpec> spec = {{"x", true},      {"y", true},        {"z", true},     {"params", true},
                                   {"method", true}, {"modular", false}, {"json", false}, {"help", false}};
   spec.insert(spec.end(), std::begin(kBuchbergerOptions), std::end(kBuchbergerOptions));
   return spec;
@@ -77,7 +78,7 @@ int run_implicitize_command(std::span<const std::string> args) {
   if (request.z) report.field_texts["z"] = *request.z;
 
   return run_reporting_errors(report, [&] {
-    const ImplicitizeAnswer answer = answer_implicitize_request(request, std::move(params));
+    const auto answer = compute_charging(params.budget, [&] { return answer_implicitize_request(request, params); });
     if (report.json) {
       std::cout << encode_implicitize_response(answer) << '\n';
     } else {

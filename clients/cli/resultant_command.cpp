@@ -9,6 +9,7 @@
 #include "help.hpp"
 #include "implicitizer/codec/json_codec.hpp"
 #include "implicitizer/codec/resultant_request.hpp"
+#include "implicitizer/core/budget.hpp"
 #include "implicitizer/polynomial/printer.hpp"
 
 namespace implicitizer::cli {
@@ -18,8 +19,8 @@ constexpr const char* kCommand = "resultant";
 
 // --timeout and --max-terms as for the other commands; --strategy and --criteria
 // are Buchberger's and mean nothing here, so they are not accepted.
-constexpr OptionSpec kOptions[] = {
-    {"var", true}, {"json", false}, {"help", false}, {"timeout", true}, {"max-terms", true}};
+constexpr OptionSpec kOptions[] = {{"var", true},     {"json", false},     {"help", false},
+                                   {"timeout", true}, {"max-terms", true}, {"max-memory", true}};
 
 }  // namespace
 
@@ -44,6 +45,9 @@ int run_resultant_command(std::span<const std::string> args) {
     }
     request.timeout_seconds = timeout_from(arguments);
     if (const auto terms = arguments.value("max-terms")) budget.set_max_terms(parse_count(*terms, "max-terms"));
+    if (const auto memory = arguments.value("max-memory")) {
+      budget.set_max_memory(parse_memory_size(*memory, "max-memory"));
+    }
   } catch (const UsageError& e) {
     return report_usage_error(e.what(), kCommand);
   }
@@ -53,7 +57,7 @@ int run_resultant_command(std::span<const std::string> args) {
   }
 
   return run_reporting_errors(report, [&] {
-    const ResultantAnswer answer = answer_resultant_request(request, budget);
+    const auto answer = compute_charging(budget, [&] { return answer_resultant_request(request, budget); });
     if (report.json) {
       std::cout << encode_resultant_response(answer) << '\n';
     } else {

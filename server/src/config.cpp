@@ -1,9 +1,14 @@
 #include "config.hpp"
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <charconv>
 #include <functional>
 #include <map>
 #include <thread>
+
+#include "implicitizer/polynomial/ring.hpp"
 
 namespace implicitizer::server {
 
@@ -26,6 +31,10 @@ const char* const kServerUsage =
     "  --default-timeout-ms N      computation budget without timeout_ms (10000)\n"
     "  --max-timeout-ms N          cap of timeout_ms; 0 and larger values get it (60000)\n"
     "  --max-terms N               largest intermediate polynomial; beyond is 413 (200000)\n"
+    "  --max-memory-mb N           memory of one computation; beyond is 413; 0 = 3/4 of RAM\n"
+    "                              shared by the workers (0)\n"
+    "  --max-variables N           variables of one request; more is 413 (64)\n"
+    "  --max-polynomials N         polynomials of one ideal; more is 413 (1000)\n"
     "  --json-max-depth N          deepest JSON nesting accepted (32)\n"
     "  --shutdown-grace-ms N       on SIGTERM/SIGINT, time in-flight work may finish (5000)\n"
     "  --cors-origins LIST         comma-separated allowed origins, * for any, '' for none (*)\n"
@@ -36,6 +45,16 @@ unsigned ServerConfig::effective_worker_threads() const {
   if (worker_threads > 0) return worker_threads;
   const unsigned cores = std::thread::hardware_concurrency();
   return cores > 0 ? cores : 1;
+}
+
+std::size_t ServerConfig::effective_max_memory_bytes() const {
+  constexpr std::size_t kMiB = std::size_t{1} << 20;
+  if (max_memory_mb > 0) return max_memory_mb * kMiB;
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long page_size = sysconf(_SC_PAGESIZE);
+  // Unknown memory: a limit that still stops a runaway on any machine this runs on.
+  const std::size_t ram = pages > 0 && page_size > 0 ? static_cast<std::size_t>(pages) * page_size : 4096 * kMiB;
+  return std::max(kMiB, ram / 4 * 3 / effective_worker_threads());
 }
 
 namespace {
@@ -98,6 +117,9 @@ std::optional<ServerConfig> parse_server_flags(const std::vector<std::string>& a
       {"default-timeout-ms", millis(config.default_timeout, 1)},
       {"max-timeout-ms", millis(config.max_timeout, 1)},
       {"max-terms", count(config.max_terms, 0, kBig)},
+      {"max-memory-mb", count(config.max_memory_mb, 0, std::uint64_t{1} << 30)},
+      {"max-variables", count(config.max_variables, 1, kMaxVariables)},
+      {"max-polynomials", count(config.max_polynomials, 1, 1'000'000)},
       {"json-max-depth", count(config.json_max_depth, 1, 4096)},
       {"shutdown-grace-ms", millis(config.shutdown_grace, 0)},
       {"cors-origins", [&](const std::string&, const std::string& v) { config.cors_origins = split_origins(v); }},

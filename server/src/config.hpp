@@ -42,6 +42,15 @@ struct ServerConfig {
   std::chrono::milliseconds max_timeout{60'000};
   /// --max-terms: largest intermediate polynomial (terms) of a computation; beyond → 413.
   std::size_t max_terms = 200'000;
+  /// --max-memory-mb: memory one computation may hold, in MiB; beyond → 413
+  /// `memory_limit_exceeded`. 0 (the default) derives it: three quarters of the
+  /// machine's memory shared by the workers, so that all of them at their limit
+  /// still fit.
+  std::size_t max_memory_mb = 0;
+  /// --max-variables: variables (identifiers) of one request; more → 413 at once.
+  std::size_t max_variables = 64;
+  /// --max-polynomials: polynomials of one groebner request; more → 413 at once.
+  std::size_t max_polynomials = 1000;
   std::size_t json_max_depth = 32;   ///< --json-max-depth: deeper request JSON gets 400
   std::size_t cache_capacity = 256;  ///< --cache-size: results kept (LRU; 0 = no cache)
   /// --shutdown-grace-ms: on SIGTERM/SIGINT, how long in-flight work may finish
@@ -56,6 +65,8 @@ struct ServerConfig {
 
   /// The number of workers to start: worker_threads, or the number of cores.
   unsigned effective_worker_threads() const;
+  /// The memory limit of one computation in bytes: max_memory_mb, or the derived default.
+  std::size_t effective_max_memory_bytes() const;
 };
 
 /// A command line the server cannot start with; main() prints it with the usage.

@@ -30,15 +30,20 @@ Response make_exception_response(const std::exception_ptr& error) {
   } catch (const NoSingleEquation& e) {
     return make_json_response(http::status::unprocessable_entity, encode_error(e));
   } catch (const LimitExceeded& e) {
-    // A size limit is the request being too large for this server, as a body is;
-    // a cancelled computation only answers a client that has gone (or a shutdown).
-    const http::status status = e.limit() == Limit::time   ? http::status::gateway_timeout
-                                : e.limit() == Limit::size ? http::status::payload_too_large
-                                                           : http::status::service_unavailable;
+    // A size or memory limit is the request being too large for this server, as a
+    // body is; a cancelled computation only answers a client that has gone (or a
+    // shutdown).
+    const http::status status = e.limit() == Limit::time        ? http::status::gateway_timeout
+                                : e.limit() == Limit::cancelled ? http::status::service_unavailable
+                                                                : http::status::payload_too_large;
     return make_json_response(status, encode_error(e));
   } catch (const std::bad_alloc&) {
-    return make_error_response(http::status::payload_too_large, "out_of_memory",
-                               "the computation needed more memory than is available");
+    // The machine's memory exhausted (an allocation past a computation's own limit
+    // arrives here as LimitExceeded: Budget::rethrow_bad_alloc).
+    return make_json_response(http::status::payload_too_large,
+                              encode_error(LimitExceeded(Limit::memory,
+                                                         "out of memory: the machine has no memory "
+                                                         "left for this computation")));
   } catch (...) {
     return make_error_response(http::status::internal_server_error, "internal_error", "internal error");
   }

@@ -16,6 +16,8 @@ const char* to_string(ComputationOutcome outcome) {
       return "time_limit";
     case ComputationOutcome::size_limit:
       return "size_limit";
+    case ComputationOutcome::memory_limit:
+      return "memory_limit";
     case ComputationOutcome::cancelled:
       return "cancelled";
     case ComputationOutcome::failed:

@@ -14,7 +14,16 @@
 namespace implicitizer::server {
 
 /// What happened to one computation handed to the worker pool.
-enum class ComputationOutcome { ok, input_error, no_single_equation, time_limit, size_limit, cancelled, failed };
+enum class ComputationOutcome {
+  ok,
+  input_error,
+  no_single_equation,
+  time_limit,
+  size_limit,
+  memory_limit,
+  cancelled,
+  failed
+};
 
 /// Values read at scrape time from the pool and the cache.
 struct MetricsGauges {

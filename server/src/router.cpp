@@ -39,9 +39,20 @@ ComputationOutcome classify(const std::exception_ptr& error) {
   } catch (const NoSingleEquation&) {
     return ComputationOutcome::no_single_equation;
   } catch (const LimitExceeded& e) {
-    return e.limit() == Limit::time   ? ComputationOutcome::time_limit
-           : e.limit() == Limit::size ? ComputationOutcome::size_limit
-                                      : ComputationOutcome::cancelled;
+    switch (e.limit()) {
+      case Limit::time:
+        return ComputationOutcome::time_limit;
+      case Limit::memory:
+        return ComputationOutcome::memory_limit;
+      case Limit::cancelled:
+        return ComputationOutcome::cancelled;
+      case Limit::size:
+      case Limit::work:
+        return ComputationOutcome::size_limit;
+    }
+    return ComputationOutcome::failed;
+  } catch (const std::bad_alloc&) {
+    return ComputationOutcome::memory_limit;
   } catch (...) {
     return ComputationOutcome::failed;
   }
@@ -169,7 +180,11 @@ Computation Router::finish(const Request& request, const std::string& endpoint, 
     ComputationOutcome outcome = ComputationOutcome::ok;
     try {
       budget.check("the wait for a worker");  // timed out or cancelled while queued
-      response = inner();
+      try {
+        response = inner();
+      } catch (const std::bad_alloc&) {
+        budget.rethrow_bad_alloc("the computation");
+      }
     } catch (...) {
       outcome = classify(std::current_exception());
       response = make_exception_response(std::current_exception());

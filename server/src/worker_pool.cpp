@@ -4,6 +4,14 @@
 
 namespace implicitizer::server {
 
+namespace {
+
+// A computation whose peak passed this gives its freed memory back to the system
+// (malloc_trim walks the heap, so small computations skip it).
+constexpr std::size_t kReleaseAfterBytes = std::size_t{64} << 20;
+
+}  // namespace
+
 WorkerPool::WorkerPool(unsigned threads, std::size_t queue_capacity) : capacity_(queue_capacity) {
   threads_.reserve(std::max(1U, threads));
   for (unsigned i = 0; i < std::max(1U, threads); ++i) threads_.emplace_back([this] { work(); });
@@ -41,9 +49,18 @@ void WorkerPool::work() {
     }
     // run() does not throw by contract; if it does anyway (out of memory while
     // finishing a response), the job's session is dropped rather than the process.
-    try {
-      job.run();
-    } catch (...) {
+    // Its allocations, and those of the threads it starts, count against its budget.
+    {
+      const MemoryScope scope(job.budget.memory_account());
+      try {
+        job.run();
+      } catch (...) {
+      }
+    }
+    // glibc keeps freed memory for reuse; after a large computation that would leave
+    // the process holding gigabytes (docs/api.md, "Reliability", has the measurement).
+    if (const MemoryAccount* account = job.budget.memory_account()) {
+      release_free_memory(account->peak_bytes(), kReleaseAfterBytes);
     }
     {
       std::lock_guard lock(mutex_);

@@ -39,14 +39,12 @@ std::vector<std::string> coordinate_names(std::size_t count) {
 }
 
 Parametrization parse_parametrization(const std::string& x, const std::string& y, const std::string& z,
-                                      const std::optional<std::vector<std::string>>& parameters,
-                                      const Budget& budget) {
+                                      const std::optional<std::vector<std::string>>& parameters, const Budget& budget) {
   return parse_parametrization(std::vector<std::string>{x, y, z}, parameters, budget);
 }
 
 Parametrization parse_parametrization(const std::vector<std::string>& texts,
-                                      const std::optional<std::vector<std::string>>& parameters,
-                                      const Budget& budget) {
+                                      const std::optional<std::vector<std::string>>& parameters, const Budget& budget) {
   if (texts.size() != 2 && texts.size() != 3) {
     throw std::invalid_argument("parse_parametrization: two or three coordinates expected");
   }
@@ -72,8 +70,9 @@ Parametrization parse_parametrization(const std::vector<std::string>& texts,
     }
   }
   std::vector<std::string> names = found;
+  if (parameters) names = *parameters;
+  budget.check_variables(names.size(), "the parametrization");
   if (parameters) {
-    names = *parameters;
     std::set<std::string> unique;
     for (const auto& p : names) {
       if (!is_identifier(p)) {

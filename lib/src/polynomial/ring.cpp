@@ -8,6 +8,10 @@
 namespace implicitizer {
 
 RingPtr Ring::make(std::vector<std::string> variables, const MonomialOrder& order) {
+  if (variables.size() > kMaxVariables) {
+    throw LimitExceeded(Limit::size, "a ring of " + std::to_string(variables.size()) + " variables; the limit is " +
+                                         std::to_string(kMaxVariables));
+  }
   std::set<std::string> seen;
   for (const auto& v : variables) {
     if (v.empty()) throw InputError("invalid_variables", "empty variable name");
@@ -78,8 +82,6 @@ std::uint64_t Ring::divisor_mask(const std::int32_t* m) const {
   return mask;
 }
 
-bool Ring::operator==(const Ring& other) const {
-  return variables_ == other.variables_ && order_ == other.order_;
-}
+bool Ring::operator==(const Ring& other) const { return variables_ == other.variables_ && order_ == other.order_; }
 
 }  // namespace implicitizer

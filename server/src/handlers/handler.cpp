@@ -7,7 +7,10 @@ Budget make_computation_budget(const std::optional<double>& requested_seconds, c
   double seconds = std::chrono::duration<double>(config.default_timeout).count();
   if (requested_seconds) seconds = *requested_seconds <= 0 || *requested_seconds > cap ? cap : *requested_seconds;
   Budget budget = Budget::with_timeout(seconds);
-  budget.set_max_terms(config.max_terms);
+  budget.set_max_terms(config.max_terms)
+      .set_max_memory(config.effective_max_memory_bytes())
+      .set_max_variables(config.max_variables)
+      .set_max_polynomials(config.max_polynomials);
   return budget;
 }
 

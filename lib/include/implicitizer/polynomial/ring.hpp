@@ -25,11 +25,18 @@ using RingPtr = std::shared_ptr<const Ring>;
 /// weighted keys (weights <= 1024) cannot overflow.
 inline constexpr std::int32_t kMaxTotalDegree = 1 << 20;
 
+/// The most variables a ring may have. Monomials are dense (a key word per row of the
+/// order matrix and an exponent per variable) and encoding one costs a product with
+/// the num_variables² order matrix, so a ring of 20 000 variables would take gigabytes
+/// and seconds per term; requests are capped far lower (Budget::max_variables).
+inline constexpr std::size_t kMaxVariables = 1024;
+
 /// Variable names and a monomial order, with the monomial arithmetic for them.
 class Ring {
  public:
   /// Builds a ring. Throws InputError (`invalid_variables`) for duplicate or empty
-  /// names, (`invalid_order`) when the order does not fit the variables.
+  /// names, (`invalid_order`) when the order does not fit the variables, and
+  /// LimitExceeded (size) for more than kMaxVariables variables.
   static RingPtr make(std::vector<std::string> variables, const MonomialOrder& order = MonomialOrder::grevlex());
 
   /// The variable names, largest first.
