@@ -13,6 +13,7 @@
 #include <numeric>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -46,6 +47,11 @@ constexpr std::size_t kExtraRows = 8;
 // nullity (tp_11_rational: one kernel instead of two; tri_quadratic: one instead of
 // three).
 constexpr double kDirectColumns = 36;
+
+// Kernels of at least this many columns time the row reduction for the deadline's
+// prediction (refuse_kernel_past_deadline); smaller ones are mostly evaluation and
+// set-up, whose cost does not grow as the cube.
+constexpr double kTimedColumns = 200;
 
 // Rational reconstruction accepts a value only with this many bits to spare, so that
 // a residue that is not yet the image of a small rational is taken for one with
@@ -709,9 +715,12 @@ class InterpolationDriver {
       const MonomialBasis& basis = basis_of(degree);
       const unsigned threads = batch_threads(basis.size(), /*upward_step=*/searching && degree < d_max);
       stats_.threads = std::max(stats_.threads, threads);
+      refuse_kernel_past_deadline(columns);
       const auto batch_start = Clock::now();
       std::vector<KernelImage> images = run_batch(basis, threads);
-      (searching ? stats_.search_ms : stats_.images_ms) += ms_since(batch_start);
+      const double batch_ms = ms_since(batch_start);
+      (searching ? stats_.search_ms : stats_.images_ms) += batch_ms;
+      if (columns >= kTimedColumns) ms_per_cubed_column_ = batch_ms / (columns * columns * columns);
       for (KernelImage& image : images) {
         if (searching) ++stats_.degree_probes;
         if (auto answer = take(std::move(image))) {
@@ -728,6 +737,25 @@ class InterpolationDriver {
     auto it = bases_.find(degree);
     if (it == bases_.end()) it = bases_.emplace(degree, monomial_basis(forms_.coordinates, degree)).first;
     return it->second;
+  }
+
+  // FLINT's row reduction cannot be interrupted, and at 3000 columns one takes seconds:
+  // a kernel that would end past the deadline is refused before it starts, so that
+  // the answer comes within the time limit (issue 16: 4.5 s on a 3 s budget). Its
+  // time is predicted from the last large kernel's, measured on this run (so under
+  // this load), scaled by the cube of the growth in columns (the row reduction's
+  // cost; the upward search grows them by at most a third a step from 200 columns on).
+  void refuse_kernel_past_deadline(double columns) const {
+    if (ms_per_cubed_column_ <= 0) return;
+    const double predicted_seconds = ms_per_cubed_column_ * columns * columns * columns / 1000;
+    const double left = options_.budget.seconds_left();
+    if (predicted_seconds <= left) return;
+    std::ostringstream message;
+    message.precision(2);
+    message << "time limit of " << options_.budget.timeout_seconds()
+            << " s exceeded during interpolation: the kernel of " << static_cast<std::size_t>(columns)
+            << " columns would take about " << predicted_seconds << " s and " << std::max(0.0, left) << " s are left";
+    throw LimitExceeded(Limit::time, message.str());
   }
 
   // A prime per thread when a kernel is large enough to pay for starting one. A step
@@ -851,10 +879,12 @@ class InterpolationDriver {
   MapForms forms_;
   PrimeSequence primes_;
   std::size_t taken_ = 0;
+  // The last large kernel's milliseconds per cubed column (0 until one ran).
+  double ms_per_cubed_column_ = 0;
   InterpolationStats stats_;
   std::map<std::int32_t, MonomialBasis> bases_;
-  std::int32_t lower_ = 1;     // proven: e ≥ lower_
-  std::int32_t estimate_ = 0;  // the largest degree read from a non-zero kernel (0: none)
+  std::int32_t lower_ = 1;           // proven: e ≥ lower_
+  std::int32_t estimate_ = 0;        // the largest degree read from a non-zero kernel (0: none)
   std::size_t estimate_probes_ = 0;  // kernels above estimate_ that read it
   std::int32_t lift_degree_ = 0;
   std::optional<RationalLift> lift_;
