@@ -399,5 +399,31 @@ expect_status "render parse error" 3 "unexpected_end" render --implicit "x^2+" -
 expect_status "render unwritable output" 2 "cannot write" render --implicit "x" --size 8x8 -o /nonexistent-dir/u.png
 expect_status "render timeout" 5 "time" render --implicit "x^2+y^2+z^2-1" --size 2048x2048 --aa 1 --timeout 0.001 -o "$WORK/u.png"
 
+# ---- issue 16: limits that hold on hostile input --------------------------------
+# expect_within NAME SECONDS STATUS STDERR_PATTERN ARGS...: expect_status, and the
+# command ended within SECONDS (the limit under test plus 1 s plus an allowance of
+# 10 s for a loaded CI machine: before the fixes these ran for minutes).
+expect_within() {
+  local name=$1 seconds=$2
+  shift 2
+  local start=$SECONDS
+  expect_status "$name" "$@"
+  local took=$((SECONDS - start))
+  if ((took > seconds)); then fail "$name took ${took} s (at most ${seconds} s)"; else pass; fi
+}
+# The resultant over 20 000 identifiers was still running after 25 s on --timeout 5:
+# a ring of that many variables is refused before it is built.
+MANY=$(python3 -c 'print("+".join("v%d" % i for i in range(20000)))')
+expect_within "resultant over 20000 identifiers" 16 5 "size_limit_exceeded.*20000 variables; the limit is 1024"   resultant --var v0 --timeout 5 "$MANY" v0
+# Interpolation overran --timeout 5 by 1.3-1.9 s: its uninterruptible row reductions
+# are now refused when they would end past the deadline.
+expect_within "interpolation within its timeout" 16 5 "time_limit_exceeded|size_limit_exceeded"   implicitize --x "s^40+t" --y "t^40+s" --z "s*t" --method interpolation --timeout 5
+# --max-memory: a product of 10 million terms, no term limit, stopped by the memory limit.
+expect_json "memory limit" 5 "j['error']['code'] == 'memory_limit_exceeded' and j['error']['limit'] == 'memory'
+and '64 MiB' in j['error']['message']" groebner --max-memory 64M --json "(a+b+c+d+e+f+g+h)^30"
+expect_status "memory limit, bad size" 2 "--max-memory needs a size" groebner --max-memory 12X "x"
+expect_status "memory limit, zero" 2 "--max-memory needs a size" resultant --var x --max-memory 0 "x" "x+1"
+expect "memory limit, generous" 0 "x-1" groebner --max-memory 1G "x^2-1" "x-1"
+
 echo "$passed passed, $failed failed"
 [[ $failed == 0 ]]
