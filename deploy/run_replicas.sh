@@ -57,13 +57,14 @@ start_replica() {
   local n=$1 line='' i
   "$SERVER" --host 127.0.0.1 --port 0 --quiet --threads 1 >"$work/replica$n.out" 2>"$work/replica$n.err" &
   replica_pids+=($!)
-  for i in $(seq 100); do
+  # Polled for 30 s: a loaded 2-core machine may start a process slowly.
+  for i in $(seq 300); do
     line=$(grep -m1 'listening on http://' "$work/replica$n.out" 2>/dev/null || true)
     [[ -n "$line" ]] && break
     kill -0 "${replica_pids[-1]}" 2>/dev/null || die "replica $n exited on start: $(cat "$work/replica$n.err")"
     sleep 0.1
   done
-  [[ -n "$line" ]] || die "replica $n did not print its address within 10 s"
+  [[ -n "$line" ]] || die "replica $n did not print its address within 30 s"
   replica_ports+=("${line##*:}")
 }
 
@@ -92,7 +93,7 @@ start_nginx() {
     "$NGINX" -p "$work/" -c "$work/nginx.conf" -g 'daemon off;' >"$work/nginx.out" 2>&1 &
     nginx_pid=$!
     front="http://127.0.0.1:$front_port"
-    for i in $(seq 100); do
+    for i in $(seq 300); do
       [[ $(http_code "$front/healthz") == 200 ]] && return 0
       kill -0 "$nginx_pid" 2>/dev/null || break
       sleep 0.1

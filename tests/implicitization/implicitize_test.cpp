@@ -3,13 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-
 #include <random>
 
+#include "implicitization/surfaces.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/polynomial/parser.hpp"
 #include "implicitizer/polynomial/printer.hpp"
-#include "implicitization/surfaces.hpp"
 
 namespace implicitizer {
 namespace {
@@ -34,8 +33,8 @@ TEST(Implicitize, PublicSurfacesMatchSingular) {
     const ImplicitizeResult r = implicitize(parse_parametrization(s.x, s.y, s.z));
     EXPECT_TRUE(r.verified);
     EXPECT_EQ(r.degree, s.degree);
-    expect_same_surface(to_string(r.implicit),
-                        testing::read_text(std::string(IMPLICITIZER_SHARED_DIR) + "/bench/expected/" + s.name + ".txt"));
+    expect_same_surface(to_string(r.implicit), testing::read_text(std::string(IMPLICITIZER_SHARED_DIR) +
+                                                                  "/bench/expected/" + s.name + ".txt"));
   }
 }
 
@@ -45,13 +44,13 @@ TEST(Implicitize, SeedExample13IsThePlane) {
 }
 
 TEST(Implicitize, SeedTable42WithItsSlipsCorrected) {
-  EXPECT_EQ(implicit_of("t^2+s^2", "t", "s"), "y^2+z^2-x");           // elliptic paraboloid
-  EXPECT_EQ(implicit_of("t", "s", "t^2-s^2"), "x^2-y^2-z");           // hyperbolic paraboloid
-  EXPECT_EQ(implicit_of("s", "t", "s^2+t^2"), "x^2+y^2-z");           // the "ellipsoid" is a paraboloid
+  EXPECT_EQ(implicit_of("t^2+s^2", "t", "s"), "y^2+z^2-x");            // elliptic paraboloid
+  EXPECT_EQ(implicit_of("t", "s", "t^2-s^2"), "x^2-y^2-z");            // hyperbolic paraboloid
+  EXPECT_EQ(implicit_of("s", "t", "s^2+t^2"), "x^2+y^2-z");            // the "ellipsoid" is a paraboloid
   EXPECT_EQ(implicit_of("(t-s)/t", "s/t", "(s^3+t^2)/t^2"), "x+y-1");  // Sage 1
-  EXPECT_EQ(implicit_of("s/t", "s/t^2", "(s+t)/s"), "x*z-x-1");       // Sage 2
+  EXPECT_EQ(implicit_of("s/t", "s/t^2", "(s+t)/s"), "x*z-x-1");        // Sage 2
   EXPECT_EQ(implicit_of("s/(s*t)", "(t^2-s)/t^2", "t/s"), "y*z+x-z");  // Sage 3 (x = s/(s t))
-  EXPECT_EQ(implicit_of("(t-s^2)/(s*t)", "s^2/3", "s"), "z^2-3*y");   // Sage 4
+  EXPECT_EQ(implicit_of("(t-s^2)/(s*t)", "s^2/3", "s"), "z^2-3*y");    // Sage 4
 }
 
 TEST(Implicitize, CurvesAndPointsHaveNoSingleEquation) {
@@ -83,9 +82,9 @@ TEST(Implicitize, ModularGroebnerRouteAgreesWithSingular) {
   ImplicitizeOptions options;
   options.method = ImplicitizationMethod::groebner;
   options.modular_groebner = true;
-  options.groebner.budget.set_timeout(60);
   for (const auto& s : surfaces) {
     SCOPED_TRACE(s.name);
+    options.groebner.budget.set_timeout(60);  // each surface its own minute (about a second unloaded)
     const ImplicitizeResult r = implicitize(parse_parametrization(s.x, s.y, s.z), options);
     ASSERT_TRUE(r.modular_stats);
     EXPECT_TRUE(r.verified);
@@ -249,9 +248,9 @@ TEST(Implicitize, RandomPatchesByBothRoutes) {
   };
   // Buchberger is compared where it takes well under a second (the rational
   // bidegree-(1,2), bidegree-(3,1) and degree-2 patches take it from 5 s to over 20 s).
-  const Shape shapes[] = {{1, 1, true, false, true},  {1, 1, true, true, true},    {2, 1, true, false, true},
-                          {1, 2, true, true, false},  {2, 2, true, true, false},   {3, 1, true, false, false},
-                          {0, 2, false, false, true}, {0, 2, false, true, false},  {0, 3, false, false, false},
+  const Shape shapes[] = {{1, 1, true, false, true},  {1, 1, true, true, true},   {2, 1, true, false, true},
+                          {1, 2, true, true, false},  {2, 2, true, true, false},  {3, 1, true, false, false},
+                          {0, 2, false, false, true}, {0, 2, false, true, false}, {0, 3, false, false, false},
                           {0, 3, false, true, false}, {3, 2, true, false, false}};
   for (const Shape& shape : shapes) {
     for (int trial = 0; trial < 2; ++trial) {
@@ -314,7 +313,7 @@ TEST(Implicitize, BasePointsMakeAutoFallBackAndResultantRefuse) {
   const char* cases[][3] = {
       {"2*s/(1+s^2+t^2)", "2*t/(1+s^2+t^2)", "(s^2+t^2-1)/(1+s^2+t^2)"},  // stereographic sphere
       {"(2+(1-t^2)/(1+t^2))*(1-s^2)/(1+s^2)", "(2+(1-t^2)/(1+t^2))*2*s/(1+s^2)", "2*t/(1+t^2)"},  // torus
-      {"s*t", "t", "s^2"},  // Whitney's umbrella
+      {"s*t", "t", "s^2"},                                                                        // Whitney's umbrella
   };
   const char* expected[] = {"x^2+y^2+z^2-1", "x^4+2*x^2*y^2+y^4+2*x^2*z^2+2*y^2*z^2+z^4-10*x^2-10*y^2+6*z^2+9",
                             "x^2-y^2*z"};
@@ -358,11 +357,11 @@ TEST(Implicitize, PlaneCurvesByBothRoutes) {
   // Two coordinates in one parameter: the implicit curve f(x, y), by Sylvester's
   // resultant (auto) and by Buchberger, which must agree.
   const char* cases[][3] = {
-      {"t^2-1", "t^3-t", "x^3+x^2-y^2"},                        // nodal cubic
-      {"(1-t^2)/(1+t^2)", "2*t/(1+t^2)", "x^2+y^2-1"},          // circle
-      {"3*t/(1+t^3)", "3*t^2/(1+t^3)", "x^3+y^3-3*x*y"},        // folium of Descartes
-      {"t^2", "t^4", "x^2-y"},                                  // covered twice: map degree 2
-      {"t^3/(t^2+1)", "t^5-2*t+7", ""},                         // a rational quintic, checked by agreement
+      {"t^2-1", "t^3-t", "x^3+x^2-y^2"},                  // nodal cubic
+      {"(1-t^2)/(1+t^2)", "2*t/(1+t^2)", "x^2+y^2-1"},    // circle
+      {"3*t/(1+t^3)", "3*t^2/(1+t^3)", "x^3+y^3-3*x*y"},  // folium of Descartes
+      {"t^2", "t^4", "x^2-y"},                            // covered twice: map degree 2
+      {"t^3/(t^2+1)", "t^5-2*t+7", ""},                   // a rational quintic, checked by agreement
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c[0]);

@@ -22,6 +22,10 @@ SPHERE = {"x": "2*s/(1+s^2+t^2)", "y": "2*t/(1+s^2+t^2)", "z": "(1-s^2-t^2)/(1+s
 # it has base points, so auto would take the same route anyway).
 SLOW = {"x": "s^3+t^2*s", "y": "t^3-s", "z": "s*t^2+t^4", "method": "groebner"}
 SECRET = "top-secret-outside-static"
+# Added to every time bound: what a loaded 2-core CI machine may take beyond the
+# limit under test (the bound still fails a limit that does not hold: those took
+# minutes or never answered).
+LOAD_ALLOWANCE_S = 10.0
 
 failures = []
 checks = 0
@@ -250,7 +254,8 @@ def test_resultant(s):
     start = time.time()
     status, _, body = s.post_json("/v1/resultant", dict(SLOW_RESULTANT, timeout_ms=300))
     check(status == 504 and error_code(body) == "time_limit_exceeded", "resultant timeout: %s %r" % (status, body))
-    check(time.time() - start < 5, "resultant timeout answered in %.1f s" % (time.time() - start))
+    check(time.time() - start < 0.3 + 1 + LOAD_ALLOWANCE_S,
+          "resultant timeout answered in %.1f s" % (time.time() - start))
 
 
 def test_input_errors(s):
@@ -288,7 +293,7 @@ def test_semantic_errors(s):
     status, _, body = s.post_json("/v1/implicitize", dict(SLOW, timeout_ms=300))
     elapsed = time.time() - start
     check(status == 504 and error_code(body) == "time_limit_exceeded", "timeout: %s %r" % (status, body))
-    check(elapsed < 5, "timeout answered in %.1f s" % elapsed)
+    check(elapsed < 0.3 + 1 + LOAD_ALLOWANCE_S, "timeout answered in %.1f s" % elapsed)
 
 
 def test_routing_errors(s):
@@ -338,7 +343,7 @@ def test_slow_headers_dropped(s, read_timeout_s):
         start = time.time()
         data = sock.recv(1024)
         elapsed = time.time() - start
-    check(data == b"" and read_timeout_s * 0.5 < elapsed < read_timeout_s + 3,
+    check(data == b"" and read_timeout_s * 0.5 < elapsed < read_timeout_s + LOAD_ALLOWANCE_S,
           "slow headers dropped after %.2f s (got %r)" % (elapsed, data[:40]))
     # Trickling bytes does not help: the timeout covers the whole header.
     with socket.create_connection(("127.0.0.1", s.port), timeout=10) as sock:
@@ -351,14 +356,14 @@ def test_slow_headers_dropped(s, read_timeout_s):
                 closed = True
                 break
             time.sleep(0.1)
-            if time.time() - start > read_timeout_s + 3:
+            if time.time() - start > read_timeout_s + LOAD_ALLOWANCE_S:
                 break
         if not closed:
             try:
                 closed = sock.recv(1024) == b""
             except OSError:
                 closed = True
-        check(closed and time.time() - start < read_timeout_s + 3, "trickling client dropped")
+        check(closed and time.time() - start < read_timeout_s + LOAD_ALLOWANCE_S, "trickling client dropped")
 
 
 def test_keep_alive_cap(s, cap):
@@ -396,16 +401,19 @@ def test_disconnect_cancels(s):
     with socket.create_connection(("127.0.0.1", s.port), timeout=10) as sock:
         sock.sendall(b"POST /v1/implicitize HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
                      b"Content-Length: %d\r\n\r\n" % len(body) + body)
-        time.sleep(0.5)
+        # Leave once the computation runs (polled: a loaded machine may take a while).
+        deadline = time.time() + 30
+        while time.time() < deadline and s.metric("implicitizer_workers_busy") == 0:
+            time.sleep(0.02)
     start = time.time()
-    while time.time() < start + 20 and s.metric("implicitizer_computations_cancelled_total") == before:
+    while time.time() < start + 30 and s.metric("implicitizer_computations_cancelled_total") == before:
         time.sleep(0.1)
     _, _, text = s.request("GET", "/metrics")
     outcomes = [line for line in text.decode().splitlines() if line.startswith("implicitizer_computations_total")]
     check(s.metric("implicitizer_computations_cancelled_total") == before + 1,
           "disconnect cancels the computation (after %.1f s): %s" % (time.time() - start, outcomes))
     # The outcome is counted just before the worker is released: allow it a moment.
-    deadline = time.time() + 5
+    deadline = time.time() + 30
     while time.time() < deadline and s.metric("implicitizer_workers_busy") != 0:
         time.sleep(0.05)
     check(s.metric("implicitizer_workers_busy") == 0, "the worker is free again")
@@ -461,9 +469,10 @@ def test_overload():
             sock = socket.create_connection(("127.0.0.1", s.port), timeout=30)
             sock.sendall(b"POST /v1/implicitize HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n" % len(body) + body)
             socks.append(sock)
-        deadline = time.time() + 5
+        deadline = time.time() + 30
         while time.time() < deadline and s.metric("implicitizer_queue_depth") != 1:
             time.sleep(0.05)
+        check(s.metric("implicitizer_queue_depth") == 1, "one computation runs and one waits")
         status, headers, data = s.post_json("/v1/implicitize", dict(SLOW, timeout_ms=20000))
         check(status == 503 and headers.get("retry-after") == "2" and error_code(data) == "overloaded",
               "full queue: %s %s %r" % (status, headers, data))

@@ -97,7 +97,7 @@ test('embed.html draws the scene POST /v1/sdf describes', async (t) => {
   const request = response.request().postDataJSON();
   const rendered = await fetch(server.url + '/v1/render', {
     method: 'POST',
-    body: JSON.stringify({ ...request, width: SIZE, height: SIZE, aa: 1, timeout_ms: 60000 }),
+    body: JSON.stringify({ ...request, width: SIZE, height: SIZE, aa: 1, timeout_ms: 300000 }),
   });
   assert.equal(rendered.status, 200);
   const cpu = decodePng(Buffer.from(await rendered.arrayBuffer()));
