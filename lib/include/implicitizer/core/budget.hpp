@@ -49,10 +49,11 @@ class Budget {
   MemoryAccount* memory_account() const { return memory_.get(); }
 
   /// Starts a fresh work allowance of `units` (0 = none) for this budget and the
-  /// copies made from it afterwards. Work is counted by the loops that charge_work():
-  /// a unit is one term, or one limb of a coefficient, written by a reduction. Unlike
-  /// wall time it does not depend on the machine's load, so a decision taken on it
-  /// (auto's head starts) is the same on every run.
+  /// copies made from it afterwards. Work is counted by the loops that charge_work(),
+  /// in units of about equal cost (terms and coefficient limbs written, reduction
+  /// steps, pairs examined: lib/src/groebner/reducer.hpp). Unlike wall time it does
+  /// not depend on the machine's load, so a decision taken on it (auto's head starts)
+  /// is the same on every run.
   Budget& set_max_work(std::uint64_t units);
   /// The work allowance (0 = none).
   std::uint64_t max_work() const { return max_work_; }
@@ -62,8 +63,9 @@ class Budget {
   /// The work charged since set_max_work() (0 without an allowance).
   std::uint64_t work_done() const { return work_ ? work_->load(std::memory_order_relaxed) : 0; }
 
-  /// Caps on what a request states, checked before any algebra (0 = none): the
-  /// variables of a ring (identifiers of a request) and the polynomials of an ideal.
+  // Caps on what a request states, checked before any algebra (0 = none): the
+  // variables of a ring (identifiers of a request) and the polynomials of an ideal.
+
   /// Sets the variables cap (0 = none).
   Budget& set_max_variables(std::size_t variables);
   /// The variables cap (0 = none).
