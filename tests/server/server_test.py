@@ -517,6 +517,39 @@ def test_shutdown():
     os.unlink(s.log.name)
 
 
+# One of issue 16's reproducers: before the library's loops all checked their budget,
+# this ran 13.7 s past a 1 s timeout (measured 2026-12-02), so a shutdown had to give
+# up on it; once it stops when cancelled, the same test checks the ordinary path.
+BUDGET_IGNORING_GROEBNER = {"polynomials": ["x"] * 30000, "timeout_ms": 60000}
+
+
+def test_shutdown_ends_within_grace_and_a_second():
+    grace_ms = 300
+    s = Server(BIN, "--threads", "1", "--shutdown-grace-ms", str(grace_ms), "--quiet")
+    body = json.dumps(BUDGET_IGNORING_GROEBNER).encode()
+    sock = socket.create_connection(("127.0.0.1", s.port), timeout=30)
+    try:
+        sock.sendall(b"POST /v1/groebner HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n" % len(body) + body)
+        deadline = time.time() + 20
+        while time.time() < deadline and s.metric("implicitizer_workers_busy") != 1:
+            time.sleep(0.05)  # polling the condition, not waiting for it blindly
+        check(s.metric("implicitizer_workers_busy") == 1, "the long computation runs")
+        start = time.time()
+        # grace + 1 s is the promise; 10 s more for a loaded CI machine.
+        code = s.stop(timeout=grace_ms / 1000 + 1 + 10)
+        elapsed = time.time() - start
+        log = s.log_text()
+        print("shutdown with a computation running that ignores its budget: exit %r after %.2f s (grace %.1f s)"
+              % (code, elapsed, grace_ms / 1000))
+        check(code is not None, "the server exited by itself after SIGTERM (it had to be killed after %.1f s)" % elapsed)
+        check(code in (0, 3), "exit status 0, or 3 when a computation did not stop (got %r)" % code)
+        check(code != 3 or "1 computation did not stop" in log, "exit 3 says why: %r" % log[-300:])
+        check(elapsed < grace_ms / 1000 + 1 + 10, "shutdown took %.2f s" % elapsed)
+    finally:
+        sock.close()
+        os.unlink(s.log.name)
+
+
 def main():
     base, root = make_static_tree()
     max_body = 65536
@@ -548,6 +581,7 @@ def main():
         test_overload,
         test_term_limit,
         test_shutdown,
+        test_shutdown_ends_within_grace_and_a_second,
     ]
     try:
         for test in tests:
