@@ -139,6 +139,11 @@ def test_sdf(s):
                                   "unknown_node_type", "scene.children[1].type"),
                                  ({"scene": {"type": "sphere", "radius": 1, "name": "a; } void main() {"}},
                                   "invalid_name", "scene.name"),
+                                 # Issue 16: "gl" would give gl_sdf, gl_sphere, gl_radius (reserved).
+                                 ({"scene": {"type": "sphere", "radius": 1}, "name": "gl"}, "invalid_name", "name"),
+                                 ({"implicit": "x^2+y^2+z^2-1", "name": "gl"}, "invalid_name", "name"),
+                                 ({"scene": {"type": "sphere", "radius": 1, "name": "gl", "uniforms": ["radius"]}},
+                                  "invalid_name", "scene.name"),
                                  ({"implicit": "x^2+s"}, "unknown_variable", "implicit"),
                                  ({"implicit": "x^2", "box": [0, 0, 0, 1, 1]}, "invalid_box", "box")]:
         status, _, body = s.post_json("/v1/sdf", request)
