@@ -324,6 +324,49 @@ def test_size_limits(s, max_body):
     check(status == 400 and error_code(body) == "exponent_too_large", "exponent limit: %s %r" % (status, body))
 
 
+def read_until(sock, marker=None, limit=1 << 20):
+    """Bytes received until `marker` has arrived (None: until the peer closes), the
+    peer closed, or `limit` bytes; the socket's own timeout bounds every wait."""
+    data = b""
+    while (marker is None or marker not in data) and len(data) < limit:
+        chunk = sock.recv(4096)
+        if not chunk:
+            break
+        data += chunk
+    return data
+
+
+def test_expect_continue(s, max_body):
+    # Issue 16: a client that sends `Expect: 100-continue` waits for the interim 100
+    # before it sends the body; without it, it waited for its own timeout.
+    body = json.dumps({"polynomials": ["x^2+y^2-1", "x-y"], "order": "lex"}).encode()
+    with socket.create_connection(("127.0.0.1", s.port), timeout=10) as sock:
+        sock.sendall(b"POST /v1/groebner HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+                     b"Expect: 100-Continue\r\nConnection: close\r\nContent-Length: %d\r\n\r\n" % len(body))
+        interim = read_until(sock, b"\r\n\r\n")
+        check(interim == b"HTTP/1.1 100 Continue\r\n\r\n", "Expect: 100-continue gets the interim 100: %r"
+              % interim[:80])
+        sock.sendall(body)
+        final = read_until(sock)  # until the server closes
+    head, _, data = final.partition(b"\r\n\r\n")
+    check(head.startswith(b"HTTP/1.1 200") and json.loads(data).get("basis") == ["y^2-1/2", "x-y"],
+          "the answer after 100 Continue: %r" % final[:200])
+    # A declared body above --max-body-bytes is refused at once: 413, never 100, and
+    # the client need not send the body.
+    with socket.create_connection(("127.0.0.1", s.port), timeout=10) as sock:
+        sock.sendall(b"POST /v1/groebner HTTP/1.1\r\nHost: x\r\nExpect: 100-continue\r\n"
+                     b"Content-Length: %d\r\n\r\n" % (max_body + 1))
+        answer = read_until(sock)
+    check(answer.startswith(b"HTTP/1.1 413") and b"100 Continue" not in answer and b'"body_too_large"' in answer,
+          "Expect with a too large Content-Length gets 413 without 100: %r" % answer[:120])
+    # Nothing to continue: a request without a body is answered directly.
+    with socket.create_connection(("127.0.0.1", s.port), timeout=10) as sock:
+        sock.sendall(b"GET /healthz HTTP/1.1\r\nHost: x\r\nExpect: 100-continue\r\nConnection: close\r\n\r\n")
+        answer = read_until(sock)
+    check(answer.startswith(b"HTTP/1.1 200") and b"100 Continue" not in answer,
+          "Expect without a body: no 100: %r" % answer[:80])
+
+
 def test_path_traversal(s):
     targets = ["/../secret.txt", "/sub/../../secret.txt", "/%2e%2e/secret.txt", "/%2E%2E/%2E%2E/secret.txt",
                "/..%2fsecret.txt", "/..%5csecret.txt", "/escape.txt", "/escape_dir/secret.txt",
@@ -576,6 +619,7 @@ def main():
         lambda: test_semantic_errors(s),
         lambda: test_routing_errors(s),
         lambda: test_size_limits(s, max_body),
+        lambda: test_expect_continue(s, max_body),
         lambda: test_path_traversal(s),
         lambda: test_slow_headers_dropped(s, read_timeout_ms / 1000),
         lambda: test_keep_alive_cap(s, keep_alive),
