@@ -1,25 +1,45 @@
 /// \file
-/// libFuzzer target for the HTTP request decoders (server/codec's json_codec.hpp).
+/// libFuzzer target for the HTTP requests: the decoders of server/codec
+/// (json_codec.hpp) and the answers the handlers compute from what they decode.
 ///
-/// On any bytes, decode_implicitize_request(), decode_groebner_request() and
-/// decode_resultant_request() may only return or throw InputError: malformed or
-/// non-UTF-8 JSON, deep nesting, wrong types, unknown or duplicate fields all have
-/// their code. A decoded request's expressions
-/// then go through parse_expression(), as the handlers do, under the same rule. The
-/// algebra itself is not run (it is bounded by time, not by input size).
+/// Decoding oracle: on any bytes, decode_implicitize_request(),
+/// decode_groebner_request(), decode_resultant_request(), decode_sdf_request() and
+/// decode_render_request() only return or throw InputError (malformed or non-UTF-8
+/// JSON, deep nesting, wrong types, unknown or duplicate fields all have their code),
+/// and a decoded request's expressions go through parse_expression() under the same
+/// rule.
+///
+/// Budget oracle (issue 16): every request that decodes is also answered, by the
+/// answer_*_request() function its handler calls and with the same arguments, under
+/// the budget a server with default flags would give it, its deadline shortened to
+/// kAnswerSeconds. The answer returns or throws InputError, NoSingleEquation or
+/// LimitExceeded (anything else escapes and libFuzzer reports it), and it ends within
+/// kAnswerSeconds + kOverrunSeconds: a longer answer means a loop that does not check
+/// its budget, which in the server keeps a worker (and shutdown) waiting. The target
+/// then prints the endpoint, the input's size and the time, and traps.
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <string_view>
 
+#include "config.hpp"
 #include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/core/budget.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/polynomial/expression.hpp"
 
 namespace {
 
 using namespace implicitizer;
+
+// Short, so that libFuzzer keeps its pace; the oracle is about the overrun, not the
+// length of the budget.
+constexpr double kAnswerSeconds = 0.05;
+// The issue's bound: an answer may overrun its limit by at most 1 s.
+constexpr double kOverrunSeconds = 1.0;
 
 void parse_field(const std::string& text) {
   try {
@@ -28,48 +48,95 @@ void parse_field(const std::string& text) {
   }
 }
 
+// What make_computation_budget() gives a request on a server with default flags
+// (its term limit), with the deadline kAnswerSeconds from now.
+Budget answer_budget() {
+  Budget budget = Budget::with_timeout(kAnswerSeconds);
+  budget.set_max_terms(server::ServerConfig{}.max_terms);
+  return budget;
+}
+
+// Runs `answer(budget)` and checks the budget oracle. The request's own timeout has
+// been removed by the caller, as the handlers do once the budget holds it.
+template <typename Answer>
+void answer_within_budget(const char* endpoint, std::size_t size, const Answer& answer) {
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    (void)answer(answer_budget());
+  } catch (const InputError&) {
+  } catch (const NoSingleEquation&) {
+  } catch (const LimitExceeded&) {
+  }
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (elapsed > kAnswerSeconds + kOverrunSeconds) {
+    std::fprintf(stderr,
+                 "request_fuzzer: budget overrun: %s answered a %zu-byte input in %.3f s, over its %.2f s budget "
+                 "+ %.0f s\n",
+                 endpoint, size, elapsed, kAnswerSeconds, kOverrunSeconds);
+    __builtin_trap();
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view body(reinterpret_cast<const char*>(data), size);
   try {
-    const ImplicitizeRequest request = decode_implicitize_request(body);
+    ImplicitizeRequest request = decode_implicitize_request(body);
     parse_field(request.x);
     parse_field(request.y);
     if (request.z) parse_field(*request.z);
     if (request.parameters) {
       for (const std::string& name : *request.parameters) (void)is_identifier(name);
     }
+    request.timeout_seconds.reset();
+    answer_within_budget("/v1/implicitize", size, [&request](const Budget& budget) {
+      BuchbergerParams params;
+      params.budget = budget;
+      return answer_implicitize_request(request, params);
+    });
   } catch (const InputError&) {
   }
   try {
-    const GroebnerRequest request = decode_groebner_request(body);
+    GroebnerRequest request = decode_groebner_request(body);
     for (const std::string& polynomial : request.polynomials) parse_field(polynomial);
+    request.timeout_seconds.reset();
+    answer_within_budget("/v1/groebner", size, [&request](const Budget& budget) {
+      BuchbergerParams params;
+      params.budget = budget;
+      return answer_groebner_request(request, params);
+    });
   } catch (const InputError&) {
   }
   try {
-    const ResultantRequest request = decode_resultant_request(body);
+    ResultantRequest request = decode_resultant_request(body);
     for (const std::string& polynomial : request.polynomials) parse_field(polynomial);
     (void)is_identifier(request.variable);
+    request.timeout_seconds.reset();
+    answer_within_budget("/v1/resultant", size,
+                         [&request](const Budget& budget) { return answer_resultant_request(request, budget); });
   } catch (const InputError&) {
   }
   try {
-    // The whole answer, not only the decoding: names are validated and box numbers
-    // parsed there, scenes compiled (a parametric leaf is implicitized under the
-    // budget), and the polynomial is small enough after the fuzzer's size cap.
-    (void)answer_sdf_request(decode_sdf_request(body), Budget::with_timeout(0.05));
+    // Names are validated and box numbers parsed in the answer, scenes compiled (a
+    // parametric leaf is implicitized under the budget).
+    SdfRequest request = decode_sdf_request(body);
+    request.timeout_seconds.reset();
+    answer_within_budget("/v1/sdf", size,
+                         [&request](const Budget& budget) { return answer_sdf_request(request, budget); });
   } catch (const InputError&) {
-  } catch (const NoSingleEquation&) {
-  } catch (const LimitExceeded&) {
   }
   try {
-    // Decoding only: a render is seconds of marching, far beyond a fuzz iteration;
-    // its sizes and names are checked here, its scene by the sdf branch above.
-    const RenderRequest request = decode_render_request(body);
+    RenderRequest request = decode_render_request(body);
     parse_field(request.implicit);
     if (request.parametric) {
       for (const std::string& coordinate : *request.parametric) parse_field(coordinate);
     }
+    request.timeout_seconds.reset();
+    // One render thread, as the handler asks for.
+    answer_within_budget("/v1/render", size, [&request](const Budget& budget) {
+      return answer_render_request(request, budget, RenderLimits{}, 1);
+    });
   } catch (const InputError&) {
   }
   return 0;

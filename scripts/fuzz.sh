@@ -68,7 +68,9 @@ for target in "${targets[@]}"; do
   set -e
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   speed=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
-  cov=$(grep -o 'cov: [0-9]* ft: [0-9]*' "$log" | tail -1)
+  # No coverage line when a seed fails before the first report: grep's status must
+  # not end the script (pipefail) before it names the artifact.
+  cov=$(grep -o 'cov: [0-9]* ft: [0-9]*' "$log" | tail -1 || true)
   units=$(find "$corpus" -type f | wc -l)
   if [[ $rc -eq 0 ]]; then
     echo "fuzz.sh: $target: ok, ${seconds}s, ${runs:-?} runs (${speed:-?}/s), ${cov:-cov ?}, corpus $units files"
@@ -76,7 +78,7 @@ for target in "${targets[@]}"; do
     status=1
     echo "fuzz.sh: $target: FAILED (exit $rc); log $log; artifacts:" >&2
     ls -1 "$artifacts" >&2 || true
-    grep -m1 -A25 -E '^==[0-9]+==ERROR|runtime error|parser_fuzzer:|deadly signal|uncaught exception' "$log" >&2 || tail -30 "$log" >&2
+    grep -m1 -A25 -E '^==[0-9]+==ERROR|runtime error|parser_fuzzer:|request_fuzzer:|deadly signal|uncaught exception' "$log" >&2 || tail -30 "$log" >&2
   fi
 done
 exit $status

@@ -150,8 +150,8 @@ options:
   --box x0,y0,z0,x1,y1,z1
                         the scene box, exact numbers (default -2,-2,-2,2,2,2)
   --name NAME           function NAME_sdf (default surface): [A-Za-z_][A-Za-z0-9_]*,
-                        at most 64 characters, no gl_ prefix, no __, no trailing _,
-                        not a GLSL keyword
+                        at most 64 characters, not gl nor a gl_ prefix (gl_sdf is
+                        reserved), no __, no trailing _, not a GLSL keyword
   --json                print the JSON object POST /v1/sdf returns
   -h, --help            this text
 

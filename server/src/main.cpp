@@ -1,5 +1,6 @@
 // implicitizer-server: the contract's HTTP service. Parses the flags, starts the
-// Server, and waits for SIGINT/SIGTERM to shut it down gracefully (exit 0).
+// Server, and waits for SIGINT/SIGTERM to shut it down gracefully (exit 0, or
+// kExitComputationsDidNotStop when Server::stop() had to leave computations behind).
 
 #include <csignal>
 #include <exception>

@@ -3,7 +3,11 @@
 #include <boost/asio/ip/address.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <iostream>
+#include <string>
 
 namespace implicitizer::server {
 
@@ -39,6 +43,10 @@ HandlerContext make_handler_context(const ServerConfig& config, ResultCache& cac
                         }};
 }
 
+// The part of Server::kStopAfterCancel kept for writing the last answers; the rest
+// is the workers' time to stop.
+constexpr std::chrono::milliseconds kLastWrites{200};
+
 ServerConfig checked(ServerConfig config) {
   if (!config.static_dir.empty() && !std::filesystem::is_directory(config.static_dir)) {
     throw UsageError("--static: '" + config.static_dir + "' is not a directory");
@@ -70,10 +78,19 @@ void Server::stop() {
   listener_->stop();
   // Workers finish or are cancelled; each posts its answer to its session's strand,
   // which the still-running network threads write.
-  pool_.shutdown(config_.shutdown_grace);
+  const std::size_t unfinished = pool_.shutdown(config_.shutdown_grace, kStopAfterCancel - kLastWrites);
   // A short, bounded wait for those last writes; a client that does not read them
   // in this time loses them.
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  std::this_thread::sleep_for(kLastWrites);
+  if (unfinished > 0) {
+    // One write, so that no access-log line of a network thread splits it.
+    std::cerr << "implicitizer-server: " + std::to_string(unfinished) + " computation" +
+                     (unfinished == 1 ? "" : "s") + " did not stop within " +
+                     std::to_string(kStopAfterCancel.count()) + " ms of being cancelled; exiting without them\n"
+              << std::flush;
+    std::fflush(nullptr);
+    std::_Exit(kExitComputationsDidNotStop);
+  }
   io_.stop();
   for (std::thread& t : io_threads_) t.join();
 }

@@ -4,6 +4,7 @@
 /// and listener, with the shutdown order that lets in-flight answers go out.
 
 #include <boost/asio/io_context.hpp>
+#include <chrono>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -17,6 +18,10 @@
 #include "worker_pool.hpp"
 
 namespace implicitizer::server {
+
+/// The exit status of a process that Server::stop() ended because computations
+/// did not stop after their cancellation (docs/api.md, "Shutdown").
+constexpr int kExitComputationsDidNotStop = 3;
 
 /// A running implicitizer-server. Construction binds the port and starts the
 /// workers and network threads; stop() (or destruction) shuts down.
@@ -35,8 +40,20 @@ class Server {
 
   /// Graceful shutdown: stops accepting, lets in-flight computations finish for the
   /// configured grace and cancels the rest, gives their answers a moment to be
-  /// written, then stops the network threads. Idempotent.
+  /// written, then stops the network threads. Idempotent. Returns within the grace
+  /// plus kStopAfterCancel (and the time to join the network threads).
+  ///
+  /// If a cancelled computation has not stopped within kStopAfterCancel (a loop
+  /// that never checks its budget), stop() writes one line to stderr saying how many
+  /// did not stop and ends the process with std::_Exit(kExitComputationsDidNotStop):
+  /// their jobs refer to this Server's sessions, network loop and cache, so neither
+  /// returning (the Server would be destroyed under them) nor waiting (perhaps
+  /// forever) is safe.
   void stop();
+
+  /// How long stop() waits, after cancelling, for the computations to stop and for
+  /// their answers to be written.
+  static constexpr std::chrono::milliseconds kStopAfterCancel{1000};
 
  private:
   ServerConfig config_;

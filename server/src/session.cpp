@@ -4,8 +4,10 @@
 
 #include <boost/asio/dispatch.hpp>
 #include <boost/asio/post.hpp>
+#include <boost/asio/write.hpp>
 #include <cerrno>
 #include <cstring>
+#include <string_view>
 
 namespace implicitizer::server {
 
@@ -22,6 +24,17 @@ constexpr std::chrono::milliseconds kLingerTime{1000};
 constexpr std::size_t kLingerBytes = 4 << 20;
 
 bool is_http_error(const beast::error_code& ec) { return std::strcmp(ec.category().name(), "beast.http") == 0; }
+
+// RFC 9110 section 10.1.1: a client that sends `Expect: 100-continue` may wait for
+// this interim answer before it sends the body; an HTTP/1.0 request's expectation
+// is ignored. The value is case-insensitive.
+bool expects_continue(const Request& header) {
+  if (header.version() < 11) return false;
+  const auto it = header.find(http::field::expect);
+  return it != header.end() && beast::iequals(it->value(), "100-continue");
+}
+
+constexpr std::string_view kContinue = "HTTP/1.1 100 Continue\r\n\r\n";
 
 }  // namespace
 
@@ -46,6 +59,31 @@ void Session::do_read() {
   parser_->header_limit(static_cast<std::uint32_t>(context_.config.max_header_bytes));
   parser_->body_limit(context_.config.max_body_bytes);
   stream_.expires_after(context_.config.read_timeout);
+  http::async_read_header(stream_, buffer_, *parser_,
+                          beast::bind_front_handler(&Session::on_read_header, shared_from_this()));
+}
+
+void Session::on_read_header(beast::error_code ec, std::size_t bytes) {
+  // Errors (a declared Content-Length above the body limit among them) are
+  // answered as for a whole request, before any 100 Continue.
+  if (ec) return on_read(ec, bytes);
+  if (parser_->is_done() || !expects_continue(parser_->get())) return do_read_body();
+  // The raw bytes, not a Beast response: an interim answer is not a message of the
+  // session (no log line, no metrics, no keep-alive accounting).
+  stream_.expires_after(context_.config.write_timeout);
+  net::async_write(stream_, net::buffer(kContinue),
+                   beast::bind_front_handler(&Session::on_continue_written, shared_from_this()));
+}
+
+void Session::on_continue_written(beast::error_code ec, std::size_t) {
+  if (ec) return;  // the stream is closed or broken; the session ends with this handler
+  // The client starts sending only now: its body gets a whole read timeout.
+  stream_.expires_after(context_.config.read_timeout);
+  do_read_body();
+}
+
+void Session::do_read_body() {
+  // Completes at once (posted) when the parser is already done.
   http::async_read(stream_, buffer_, *parser_, beast::bind_front_handler(&Session::on_read, shared_from_this()));
 }
 

@@ -5,7 +5,9 @@
 ///
 /// Limits enforced here: a read timeout armed before every read (slow or idle clients
 /// are dropped), header and body limits on every parser (431 / 413), a request cap
-/// per connection, a write timeout. While a computation runs the session waits for
+/// per connection, a write timeout. The header is read first, so that a request with
+/// `Expect: 100-continue` gets its interim `100 Continue` (or, when its declared body
+/// is too large, the 413 at once) before the client sends the body. While a computation runs the session waits for
 /// the socket to become readable: end of stream means the client left, and the
 /// computation's budget is cancelled.
 
@@ -49,6 +51,9 @@ class Session : public std::enable_shared_from_this<Session> {
 
  private:
   void do_read();
+  void on_read_header(boost::beast::error_code ec, std::size_t bytes);
+  void on_continue_written(boost::beast::error_code ec, std::size_t bytes);
+  void do_read_body();
   void on_read(boost::beast::error_code ec, std::size_t bytes);
   void handle(Request request);
   void watch_for_disconnect();

@@ -1,6 +1,10 @@
 #include "worker_pool.hpp"
 
 #include <algorithm>
+#include <condition_variable>
+#include <deque>
+#include <list>
+#include <mutex>
 
 namespace implicitizer::server {
 
@@ -12,40 +16,68 @@ constexpr std::size_t kReleaseAfterBytes = std::size_t{64} << 20;
 
 }  // namespace
 
-WorkerPool::WorkerPool(unsigned threads, std::size_t queue_capacity) : capacity_(queue_capacity) {
-  threads_.reserve(std::max(1U, threads));
-  for (unsigned i = 0; i < std::max(1U, threads); ++i) threads_.emplace_back([this] { work(); });
+// Everything the workers touch; each worker holds a reference (see the class comment).
+struct WorkerPool::State {
+  std::mutex mutex;
+  std::condition_variable wake;  // a job arrived, or stopping
+  std::condition_variable idle;  // a job finished, or a worker exited
+  std::deque<Job> queue;
+  std::list<Budget> running;  // budgets of running jobs, for cancellation
+  std::size_t live_workers = 0;
+  bool accepting = true;
+  bool stopping = false;
+  std::uint64_t rejected = 0;
+};
+
+WorkerPool::WorkerPool(unsigned threads, std::size_t queue_capacity)
+    : capacity_(queue_capacity), state_(std::make_shared<State>()) {
+  const unsigned n = std::max(1U, threads);
+  state_->live_workers = n;
+  threads_.reserve(n);
+  for (unsigned i = 0; i < n; ++i) threads_.emplace_back([state = state_] { work(*state); });
 }
 
-WorkerPool::~WorkerPool() { shutdown(std::chrono::milliseconds(0)); }
+WorkerPool::~WorkerPool() {
+  bool stopped = false;
+  {
+    std::lock_guard lock(state_->mutex);
+    stopped = state_->stopping;
+  }
+  // After a shutdown() the jobs have had their wait; a worker still running is detached.
+  (void)shutdown(std::chrono::milliseconds(0), stopped ? std::chrono::milliseconds(0) : kDestructorStopWait);
+}
 
 bool WorkerPool::try_submit(Job& job) {
   {
-    std::lock_guard lock(mutex_);
+    std::lock_guard lock(state_->mutex);
     // The bound counts jobs beyond those the workers can run at once, so with
     // capacity 0 the pool still takes one job per idle worker.
-    if (!accepting_ || queue_.size() + running_.size() >= threads_.size() + capacity_) {
-      ++rejected_;
+    if (!state_->accepting || state_->queue.size() + state_->running.size() >= threads_.size() + capacity_) {
+      ++state_->rejected;
       return false;
     }
-    queue_.push_back(std::move(job));
+    state_->queue.push_back(std::move(job));
   }
-  wake_.notify_one();
+  state_->wake.notify_one();
   return true;
 }
 
-void WorkerPool::work() {
+void WorkerPool::work(State& state) {
   for (;;) {
     Job job;
     std::list<Budget>::iterator mine;
     {
-      std::unique_lock lock(mutex_);
-      wake_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
-      if (queue_.empty()) return;  // stopping, and nothing left to answer
-      job = std::move(queue_.front());
-      queue_.pop_front();
-      running_.push_front(job.budget);
-      mine = running_.begin();
+      std::unique_lock lock(state.mutex);
+      state.wake.wait(lock, [&state] { return state.stopping || !state.queue.empty(); });
+      if (state.queue.empty()) {  // stopping, and nothing left to answer
+        --state.live_workers;
+        state.idle.notify_all();
+        return;
+      }
+      job = std::move(state.queue.front());
+      state.queue.pop_front();
+      state.running.push_front(job.budget);
+      mine = state.running.begin();
     }
     // run() does not throw by contract; if it does anyway (out of memory while
     // finishing a response), the job's session is dropped rather than the process.
@@ -63,41 +95,55 @@ void WorkerPool::work() {
       release_free_memory(account->peak_bytes(), kReleaseAfterBytes);
     }
     {
-      std::lock_guard lock(mutex_);
-      running_.erase(mine);
+      std::lock_guard lock(state.mutex);
+      state.running.erase(mine);
     }
-    idle_.notify_all();
+    state.idle.notify_all();
   }
 }
 
-void WorkerPool::shutdown(std::chrono::milliseconds grace) {
-  std::unique_lock lock(mutex_);
-  accepting_ = false;
-  idle_.wait_for(lock, grace, [this] { return queue_.empty() && running_.empty(); });
+std::size_t WorkerPool::shutdown(std::chrono::milliseconds grace, std::chrono::milliseconds stop_wait) {
+  std::unique_lock lock(state_->mutex);
+  State& s = *state_;
+  s.accepting = false;
+  if (!s.stopping) s.idle.wait_for(lock, grace, [&s] { return s.queue.empty() && s.running.empty(); });
   // Whatever is left runs to its first budget check and answers `cancelled`.
-  for (const Job& job : queue_) job.budget.cancel();
-  for (const Budget& budget : running_) budget.cancel();
-  stopping_ = true;
+  for (const Job& job : s.queue) job.budget.cancel();
+  for (const Budget& budget : s.running) budget.cancel();
+  s.stopping = true;
+  s.wake.notify_all();
+  // Bounded: a job that never checks its budget must not keep the caller (and the
+  // process) waiting forever.
+  s.idle.wait_for(lock, stop_wait, [&s] { return s.live_workers == 0; });
+  const bool all_exited = s.live_workers == 0;
+  const std::size_t unfinished = s.running.size() + s.queue.size();
   lock.unlock();
-  wake_.notify_all();
   for (std::thread& t : threads_) {
-    if (t.joinable()) t.join();
+    if (!t.joinable()) continue;
+    // A worker that has not exited cannot be joined without waiting for its job; a
+    // std::thread destroyed while joinable would call std::terminate.
+    if (all_exited) {
+      t.join();
+    } else {
+      t.detach();
+    }
   }
+  return unfinished;
 }
 
 std::size_t WorkerPool::queued() const {
-  std::lock_guard lock(mutex_);
-  return queue_.size();
+  std::lock_guard lock(state_->mutex);
+  return state_->queue.size();
 }
 
 std::size_t WorkerPool::busy() const {
-  std::lock_guard lock(mutex_);
-  return running_.size();
+  std::lock_guard lock(state_->mutex);
+  return state_->running.size();
 }
 
 std::uint64_t WorkerPool::rejected() const {
-  std::lock_guard lock(mutex_);
-  return rejected_;
+  std::lock_guard lock(state_->mutex);
+  return state_->rejected;
 }
 
 }  // namespace implicitizer::server

@@ -6,12 +6,10 @@
 /// bound.
 
 #include <chrono>
-#include <condition_variable>
 #include <cstddef>
-#include <deque>
+#include <cstdint>
 #include <functional>
-#include <list>
-#include <mutex>
+#include <memory>
 #include <thread>
 #include <vector>
 
@@ -20,6 +18,10 @@
 namespace implicitizer::server {
 
 /// A fixed set of worker threads and a bounded FIFO queue of jobs.
+///
+/// The workers share the pool's state through a shared pointer, so a worker whose
+/// job never stops (a loop that does not check its budget) can be left behind,
+/// detached, without reading freed memory when the pool itself is destroyed.
 class WorkerPool {
  public:
   /// One unit of work. `run` must not throw (the caller wraps its computation);
@@ -31,19 +33,31 @@ class WorkerPool {
 
   /// Starts `threads` workers (at least 1) with room for `queue_capacity` waiting jobs.
   WorkerPool(unsigned threads, std::size_t queue_capacity);
-  /// Cancels what is left and joins the workers (shutdown with no grace).
+  /// shutdown(0 ms, kDestructorStopWait) if not done yet: what is left is cancelled
+  /// at once, and a worker that does not stop within that wait is detached. After a
+  /// shutdown(), does not wait again: a worker still running is detached.
   ~WorkerPool();
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;
 
+  /// How long the destructor waits for cancelled jobs to stop.
+  static constexpr std::chrono::milliseconds kDestructorStopWait{1000};
+
   /// Queues `job`; false (and `job` untouched) when the pool holds `threads +
-  /// queue_capacity` jobs (running or waiting) or is shutting down. A job accepted here always runs, even if cancelled
-  /// meanwhile: its `run` sees the cancelled budget and answers accordingly.
+  /// queue_capacity` jobs (running or waiting) or is shutting down. A job accepted
+  /// here always runs, even if cancelled meanwhile: its `run` sees the cancelled
+  /// budget and answers accordingly.
   bool try_submit(Job& job);
 
   /// Stops accepting jobs, lets queued and running ones finish for up to `grace`,
-  /// then cancels the budgets of all that remain and waits for the workers to exit.
-  void shutdown(std::chrono::milliseconds grace);
+  /// then cancels the budgets of all that remain and waits up to `stop_wait` for the
+  /// workers to exit. Returns the number of jobs (running or still queued) that had
+  /// not finished by then: 0 means every worker was joined. Otherwise the workers
+  /// are detached and keep running what they hold; whatever those jobs refer to
+  /// must outlive them, or the process must end (Server::stop() ends it). Returns
+  /// within about `grace + stop_wait`. A later call has no grace: it only waits up to
+  /// `stop_wait` again.
+  std::size_t shutdown(std::chrono::milliseconds grace, std::chrono::milliseconds stop_wait);
 
   std::size_t queued() const;                               ///< jobs waiting
   std::size_t busy() const;                                 ///< jobs running
@@ -52,17 +66,11 @@ class WorkerPool {
   std::uint64_t rejected() const;                           ///< try_submit refusals
 
  private:
-  void work();
+  struct State;
+  static void work(State& state);
 
   const std::size_t capacity_;
-  mutable std::mutex mutex_;
-  std::condition_variable wake_;  // a job arrived, or stopping
-  std::condition_variable idle_;  // a job finished
-  std::deque<Job> queue_;
-  std::list<Budget> running_;  // budgets of running jobs, for cancellation
-  bool accepting_ = true;
-  bool stopping_ = false;
-  std::uint64_t rejected_ = 0;
+  std::shared_ptr<State> state_;
   std::vector<std::thread> threads_;
 };
 

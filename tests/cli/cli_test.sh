@@ -322,6 +322,8 @@ expect_status "sdf unknown mode" 2 "unknown --mode" sdf --implicit "x" --mode ex
 expect_status "sdf missing input" 2 "missing --implicit" sdf
 expect_status "sdf injected name" 3 "invalid_name" sdf --implicit "x" --name "a(){}; void b"
 expect_status "sdf gl_ name" 3 "invalid_name" sdf --implicit "x" --name gl_X
+# Issue 16: "gl" is an identifier, but the function would be gl_sdf (reserved).
+expect_status "sdf gl name" 3 "invalid_name.*gl_sdf" sdf --implicit "x" --name gl
 expect_status "sdf keyword name" 3 "invalid_name" sdf --implicit "x" --name float
 expect_status "sdf empty box" 3 "invalid_box" sdf --implicit "x" --box 1,0,0,1,1,1
 expect_status "sdf short box" 3 "invalid_box" sdf --implicit "x" --box 1,2

@@ -267,14 +267,30 @@ TEST(CompiledScene, InjectionAttemptsAreRefused) {
     EXPECT_EQ(failure(named(sphere(1), name)).second, "scene.name") << name;
     EXPECT_EQ(failure(sphere(1), SdfMode::fast, name).first, "invalid_name") << name;
   }
-  // A uniform whose composed name is reserved: node "gl" is valid, "gl_radius" is not.
-  EXPECT_EQ(failure(named(sphere(1), "gl", {"radius"})), Failure("invalid_name", "scene.uniforms"));
+  // Issue 16: "gl" alone is an identifier, but what it derives is reserved: the scene's
+  // gl_sdf and gl_sphere, a node's uniform gl_radius. Refused where the name is given.
+  EXPECT_EQ(failure(sphere(1), SdfMode::fast, "gl"), Failure("invalid_name", "name"));
+  EXPECT_EQ(failure(named(sphere(1), "gl", {"radius"})), Failure("invalid_name", "scene.name"));
+  EXPECT_EQ(failure(named(sphere(1), "gl")), Failure("invalid_name", "scene.name"));
   const CompiledScene fine = testing::compile(named(sphere(1), "s", {"radius"}));
   EXPECT_EQ(fine.uniforms()[0].name, "s_radius");
   EXPECT_EQ(testing::glslang_both(fine), "");
   // Names never reach the text except as validated identifiers.
   EXPECT_EQ(fine.to_glsl().find(';', fine.to_glsl().find("uniform float s_radius")),
             fine.to_glsl().find("uniform float s_radius") + std::string("uniform float s_radius").size());
+}
+
+TEST(CompiledScene, NamesNextToTheReservedOnesCompileWithGlslang) {
+  // The scene's name prefixes every helper: "GL" differs from the refused "gl" only in
+  // case, and GL_ is reserved for macros alone.
+  for (const Example& e : examples()) {
+    EXPECT_EQ(testing::glslang_both(testing::compile(e.root, SdfMode::fast, "GL")), "") << e.label;
+  }
+  // A node's name prefixes its uniforms.
+  for (const char* name : {"GL", "g", "gl0"}) {
+    const CompiledScene scene = testing::compile(named(sphere(1), name, {"radius"}), SdfMode::fast, name);
+    EXPECT_EQ(testing::glslang_both(scene), "") << name;
+  }
 }
 
 TEST(CompiledScene, SafeModeRefusesSmoothOperatorsOverPolynomialLeaves) {

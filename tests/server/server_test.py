@@ -143,6 +143,11 @@ def test_sdf(s):
                                   "unknown_node_type", "scene.children[1].type"),
                                  ({"scene": {"type": "sphere", "radius": 1, "name": "a; } void main() {"}},
                                   "invalid_name", "scene.name"),
+                                 # Issue 16: "gl" would give gl_sdf, gl_sphere, gl_radius (reserved).
+                                 ({"scene": {"type": "sphere", "radius": 1}, "name": "gl"}, "invalid_name", "name"),
+                                 ({"implicit": "x^2+y^2+z^2-1", "name": "gl"}, "invalid_name", "name"),
+                                 ({"scene": {"type": "sphere", "radius": 1, "name": "gl", "uniforms": ["radius"]}},
+                                  "invalid_name", "scene.name"),
                                  ({"implicit": "x^2+s"}, "unknown_variable", "implicit"),
                                  ({"implicit": "x^2", "box": [0, 0, 0, 1, 1]}, "invalid_box", "box")]:
         status, _, body = s.post_json("/v1/sdf", request)
@@ -322,6 +327,49 @@ def test_size_limits(s, max_body):
     check(raw.startswith(b"HTTP/1.1 400") and b'"bad_request"' in raw, "malformed HTTP: %r" % raw[:60])
     status, _, body = s.post_json("/v1/groebner", {"polynomials": ["x^100000"]})
     check(status == 400 and error_code(body) == "exponent_too_large", "exponent limit: %s %r" % (status, body))
+
+
+def read_until(sock, marker=None, limit=1 << 20):
+    """Bytes received until `marker` has arrived (None: until the peer closes), the
+    peer closed, or `limit` bytes; the socket's own timeout bounds every wait."""
+    data = b""
+    while (marker is None or marker not in data) and len(data) < limit:
+        chunk = sock.recv(4096)
+        if not chunk:
+            break
+        data += chunk
+    return data
+
+
+def test_expect_continue(s, max_body):
+    # Issue 16: a client that sends `Expect: 100-continue` waits for the interim 100
+    # before it sends the body; without it, it waited for its own timeout.
+    body = json.dumps({"polynomials": ["x^2+y^2-1", "x-y"], "order": "lex"}).encode()
+    with socket.create_connection(("127.0.0.1", s.port), timeout=10) as sock:
+        sock.sendall(b"POST /v1/groebner HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+                     b"Expect: 100-Continue\r\nConnection: close\r\nContent-Length: %d\r\n\r\n" % len(body))
+        interim = read_until(sock, b"\r\n\r\n")
+        check(interim == b"HTTP/1.1 100 Continue\r\n\r\n", "Expect: 100-continue gets the interim 100: %r"
+              % interim[:80])
+        sock.sendall(body)
+        final = read_until(sock)  # until the server closes
+    head, _, data = final.partition(b"\r\n\r\n")
+    check(head.startswith(b"HTTP/1.1 200") and json.loads(data).get("basis") == ["y^2-1/2", "x-y"],
+          "the answer after 100 Continue: %r" % final[:200])
+    # A declared body above --max-body-bytes is refused at once: 413, never 100, and
+    # the client need not send the body.
+    with socket.create_connection(("127.0.0.1", s.port), timeout=10) as sock:
+        sock.sendall(b"POST /v1/groebner HTTP/1.1\r\nHost: x\r\nExpect: 100-continue\r\n"
+                     b"Content-Length: %d\r\n\r\n" % (max_body + 1))
+        answer = read_until(sock)
+    check(answer.startswith(b"HTTP/1.1 413") and b"100 Continue" not in answer and b'"body_too_large"' in answer,
+          "Expect with a too large Content-Length gets 413 without 100: %r" % answer[:120])
+    # Nothing to continue: a request without a body is answered directly.
+    with socket.create_connection(("127.0.0.1", s.port), timeout=10) as sock:
+        sock.sendall(b"GET /healthz HTTP/1.1\r\nHost: x\r\nExpect: 100-continue\r\nConnection: close\r\n\r\n")
+        answer = read_until(sock)
+    check(answer.startswith(b"HTTP/1.1 200") and b"100 Continue" not in answer,
+          "Expect without a body: no 100: %r" % answer[:80])
 
 
 def test_path_traversal(s):
@@ -526,6 +574,39 @@ def test_shutdown():
     os.unlink(s.log.name)
 
 
+# One of issue 16's reproducers: before the library's loops all checked their budget,
+# this ran 13.7 s past a 1 s timeout (measured 2026-12-02), so a shutdown had to give
+# up on it; once it stops when cancelled, the same test checks the ordinary path.
+BUDGET_IGNORING_GROEBNER = {"polynomials": ["x"] * 30000, "timeout_ms": 60000}
+
+
+def test_shutdown_ends_within_grace_and_a_second():
+    grace_ms = 300
+    s = Server(BIN, "--threads", "1", "--shutdown-grace-ms", str(grace_ms), "--quiet")
+    body = json.dumps(BUDGET_IGNORING_GROEBNER).encode()
+    sock = socket.create_connection(("127.0.0.1", s.port), timeout=30)
+    try:
+        sock.sendall(b"POST /v1/groebner HTTP/1.1\r\nHost: x\r\nContent-Length: %d\r\n\r\n" % len(body) + body)
+        deadline = time.time() + 20
+        while time.time() < deadline and s.metric("implicitizer_workers_busy") != 1:
+            time.sleep(0.05)  # polling the condition, not waiting for it blindly
+        check(s.metric("implicitizer_workers_busy") == 1, "the long computation runs")
+        start = time.time()
+        # grace + 1 s is the promise; 10 s more for a loaded CI machine.
+        code = s.stop(timeout=grace_ms / 1000 + 1 + 10)
+        elapsed = time.time() - start
+        log = s.log_text()
+        print("shutdown with a computation running that ignores its budget: exit %r after %.2f s (grace %.1f s)"
+              % (code, elapsed, grace_ms / 1000))
+        check(code is not None, "the server exited by itself after SIGTERM (it had to be killed after %.1f s)" % elapsed)
+        check(code in (0, 3), "exit status 0, or 3 when a computation did not stop (got %r)" % code)
+        check(code != 3 or "1 computation did not stop" in log, "exit 3 says why: %r" % log[-300:])
+        check(elapsed < grace_ms / 1000 + 1 + 10, "shutdown took %.2f s" % elapsed)
+    finally:
+        sock.close()
+        os.unlink(s.log.name)
+
+
 def main():
     base, root = make_static_tree()
     max_body = 65536
@@ -547,6 +628,7 @@ def main():
         lambda: test_semantic_errors(s),
         lambda: test_routing_errors(s),
         lambda: test_size_limits(s, max_body),
+        lambda: test_expect_continue(s, max_body),
         lambda: test_path_traversal(s),
         lambda: test_slow_headers_dropped(s, read_timeout_ms / 1000),
         lambda: test_keep_alive_cap(s, keep_alive),
@@ -557,6 +639,7 @@ def main():
         test_overload,
         test_term_limit,
         test_shutdown,
+        test_shutdown_ends_within_grace_and_a_second,
     ]
     try:
         for test in tests:

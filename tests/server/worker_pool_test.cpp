@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <future>
+#include <memory>
 #include <thread>
 
 namespace implicitizer::server {
@@ -35,7 +36,7 @@ TEST(WorkerPool, RunsEveryAcceptedJob) {
       WorkerPool::Job job{[&count] { ++count; }, Budget()};
       ASSERT_TRUE(pool.try_submit(job));
     }
-    pool.shutdown(5s);
+    EXPECT_EQ(pool.shutdown(5s, 5s), 0u);
   }
   EXPECT_EQ(count.load(), 50);
 }
@@ -60,7 +61,7 @@ TEST(WorkerPool, RefusesBeyondThreadsPlusQueueCapacity) {
   EXPECT_EQ(pool.busy(), 1u);
   EXPECT_EQ(pool.queued(), 2u);
   release.set_value();
-  pool.shutdown(60s);  // returns as soon as the three jobs are done
+  EXPECT_EQ(pool.shutdown(60s, 5s), 0u);  // returns as soon as the three jobs are done
   EXPECT_EQ(done.load(), 3);
   EXPECT_EQ(cancelled.load(), 0);
 }
@@ -76,11 +77,43 @@ TEST(WorkerPool, ShutdownCancelsWhatOutlivesTheGrace) {
     ASSERT_TRUE(pool.try_submit(job));
   }
   const auto start = std::chrono::steady_clock::now();
-  pool.shutdown(50ms);
+  EXPECT_EQ(pool.shutdown(50ms, 5s), 0u);
   EXPECT_LT(std::chrono::steady_clock::now() - start, 5s);
   EXPECT_EQ(cancelled.load(), 3) << "queued jobs still run, and see their cancelled budget";
   WorkerPool::Job late{[] {}, Budget()};
   EXPECT_FALSE(pool.try_submit(late)) << "no jobs after shutdown";
+}
+
+// Issue 16: a job that never checks its budget kept shutdown (and the server) waiting
+// forever. Now shutdown gives up after grace + stop_wait and says how many jobs did
+// not finish; the pool can then be destroyed while the job still runs.
+TEST(WorkerPool, ShutdownGivesUpOnAJobThatIgnoresItsBudget) {
+  std::promise<void> release;
+  std::shared_future<void> gate = release.get_future().share();
+  // Shared with the job, which outlives the pool (and could outlive this test).
+  auto finished = std::make_shared<std::atomic<bool>>(false);
+  auto pool = std::make_unique<WorkerPool>(1, 1);
+  WorkerPool::Job job{[gate, finished] {
+                        gate.wait();
+                        *finished = true;
+                      },
+                      Budget()};
+  ASSERT_TRUE(pool->try_submit(job));
+  for (int i = 0; i < 2000 && pool->busy() != 1; ++i) std::this_thread::sleep_for(5ms);
+  ASSERT_EQ(pool->busy(), 1u);
+
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(pool->shutdown(50ms, 200ms), 1u);
+  const auto elapsed = std::chrono::steady_clock::now() - start;
+  EXPECT_GE(elapsed, 250ms) << "the grace and the stop wait were both given";
+  EXPECT_LT(elapsed, 10s) << "bounded, even on a loaded machine";
+  EXPECT_FALSE(finished->load());
+  EXPECT_EQ(pool->shutdown(0ms, 10ms), 1u) << "a second call only waits again";
+  pool.reset();  // the worker is detached: no std::terminate (which would end this test binary)
+
+  release.set_value();
+  for (int i = 0; i < 2000 && !finished->load(); ++i) std::this_thread::sleep_for(5ms);
+  EXPECT_TRUE(finished->load()) << "the detached worker ran its job to the end";
 }
 
 }  // namespace

@@ -49,9 +49,16 @@ void check_glsl_name(std::string_view name) {
       throw invalid_name("a name is [A-Za-z_][A-Za-z0-9_]* (letters, digits, _; not starting with a digit)");
     }
   }
-  if (name.starts_with("gl_")) throw invalid_name("names starting with gl_ are reserved for GLSL's built-ins");
-  if (name.find("__") != std::string_view::npos || name.back() == '_') {
-    throw invalid_name("a name may not contain __ or end with _ (GLSL reserves identifiers with __)");
+  // What every identifier derived from the name starts with (glsl_name.hpp): the
+  // reserved forms are checked on it, not only on the name given.
+  const std::string prefix = std::string(name) + "_";
+  if (prefix.starts_with("gl_")) {
+    throw invalid_name("'" + std::string(name) + "' would make identifiers starting with gl_ (" + prefix +
+                       "sdf), which GLSL reserves for its built-ins");
+  }
+  if (prefix.find("__") != std::string::npos) {
+    throw invalid_name("'" + std::string(name) + "' would make identifiers containing __ (" + prefix +
+                       "sdf), which GLSL reserves");
   }
   if (std::binary_search(std::begin(kReserved), std::end(kReserved), name)) {
     throw invalid_name("'" + std::string(name) + "' is a GLSL keyword or reserved word");
