@@ -49,10 +49,14 @@ void parse_field(const std::string& text) {
 }
 
 // What make_computation_budget() gives a request on a server with default flags
-// (its term limit), with the deadline kAnswerSeconds from now.
+// (its term limit and count caps), with the deadline kAnswerSeconds from now. The
+// memory limit is left out: sanitizer builds count no allocations.
 Budget answer_budget() {
+  const server::ServerConfig defaults;
   Budget budget = Budget::with_timeout(kAnswerSeconds);
-  budget.set_max_terms(server::ServerConfig{}.max_terms);
+  budget.set_max_terms(defaults.max_terms)
+      .set_max_variables(defaults.max_variables)
+      .set_max_polynomials(defaults.max_polynomials);
   return budget;
 }
 

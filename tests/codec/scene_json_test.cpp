@@ -177,9 +177,10 @@ TEST(SceneJson, InjectionAttemptsAreRefused) {
             Failure("invalid_value", "scene.uniforms[0]"));
   EXPECT_EQ(failure(R"({"type": "sphere", "radius": 1, "name": "a", "uniforms": ["gl_X"]})"),
             Failure("invalid_value", "scene.uniforms[0]"));
-  // A node name that makes a reserved uniform name: gl + _radius.
+  // A node name that would make reserved identifiers (gl_radius, gl_sdf) is refused
+  // as a name, before any identifier is derived from it (issue 16).
   EXPECT_EQ(failure(R"({"type": "sphere", "radius": 1, "name": "gl", "uniforms": ["radius"]})"),
-            Failure("invalid_name", "scene.uniforms"));
+            Failure("invalid_name", "scene.name"));
   // Equations are parsed into polynomials; their text never reaches the GLSL.
   EXPECT_EQ(failure(R"({"type": "implicit", "equation": "x); } void main() { (x"})").first, "unexpected_token");
 }

@@ -18,22 +18,12 @@ import traceback
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from server_harness import Server  # noqa: E402
+from server_harness import LOAD_ALLOWANCE_S, Checks, Server  # noqa: E402
 
 BIN = sys.argv[1]
-LOAD_ALLOWANCE_S = 10.0
-MIB = 1024 * 1024
-
-failures = []
-checks = 0
-
-
-def check(condition, message):
-    global checks
-    checks += 1
-    if not condition:
-        failures.append(message)
-        print("FAIL:", message)
+CHECKS = Checks()
+check = CHECKS.check
+failures = CHECKS.failures
 
 
 def error(body):
@@ -226,7 +216,7 @@ def main():
             test()
         except Exception:  # noqa: BLE001
             failures.append("%s raised:\n%s" % (test.__name__, traceback.format_exc()))
-    print("%d passed, %d failed" % (checks - len(failures), len(failures)))
+    print(CHECKS.summary())
     for f in failures:
         print("FAIL:", f)
     return 1 if failures else 0
