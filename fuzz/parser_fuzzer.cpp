@@ -28,7 +28,7 @@ namespace {
 using namespace implicitizer;
 
 /// More variables than this only makes monomials wide, not the parser more tested.
-constexpr std::size_t kMaxVariables = 12;
+constexpr std::size_t kFuzzedVariables = 12;
 
 /// Reports a broken invariant the way libFuzzer expects: print, then abort.
 [[noreturn]] void fail(const char* what, std::string_view input, const std::string& detail) {
@@ -121,7 +121,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   std::vector<std::string> names = collect_identifiers(*e);
-  if (names.size() > kMaxVariables) return 0;
+  if (names.size() > kFuzzedVariables) return 0;
   const RingPtr ring = Ring::make(std::move(names));
   const std::optional<Polynomial> p = check_polynomial(*e, ring, input);
   check_rational_function(*e, ring, input, p);
