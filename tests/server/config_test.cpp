@@ -32,6 +32,30 @@ TEST(ServerFlags, ReadsValuesInBothSpellings) {
   EXPECT_EQ(config->max_body_bytes, 1000u);
 }
 
+TEST(ServerFlags, MemoryAndCountLimits) {
+  const auto defaults = parse_server_flags({});
+  ASSERT_TRUE(defaults);
+  EXPECT_EQ(defaults->max_memory_mb, 0u);
+  EXPECT_EQ(defaults->max_variables, 64u);
+  EXPECT_EQ(defaults->max_polynomials, 1000u);
+  // The derived memory limit: three quarters of the machine's memory, shared by the
+  // workers, so it shrinks with more workers and is never zero.
+  const auto one = parse_server_flags({"--threads", "1"});
+  const auto four = parse_server_flags({"--threads", "4"});
+  ASSERT_TRUE(one && four);
+  EXPECT_GT(four->effective_max_memory_bytes(), 0u);
+  EXPECT_EQ(four->effective_max_memory_bytes(), one->effective_max_memory_bytes() / 4);
+  const auto set = parse_server_flags({"--max-memory-mb", "256", "--max-variables", "8", "--max-polynomials", "10"});
+  ASSERT_TRUE(set);
+  EXPECT_EQ(set->effective_max_memory_bytes(), std::size_t{256} << 20);
+  EXPECT_EQ(set->max_variables, 8u);
+  EXPECT_EQ(set->max_polynomials, 10u);
+  // A ring never has more than kMaxVariables variables, so neither may a request.
+  EXPECT_THROW(parse_server_flags({"--max-variables", "0"}), UsageError);
+  EXPECT_THROW(parse_server_flags({"--max-variables", "1025"}), UsageError);
+  EXPECT_THROW(parse_server_flags({"--max-polynomials", "0"}), UsageError);
+}
+
 TEST(ServerFlags, HelpReturnsNothing) { EXPECT_FALSE(parse_server_flags({"--help"})); }
 
 TEST(ServerFlags, RefusesBadFlagsAndValues) {

@@ -11,9 +11,9 @@ namespace implicitizer {
 
 namespace {
 
-// Units of work a millisecond: the median over the benchmark ideals of
-// BuchbergerStats::work / elapsed_ms (docs/algorithms.md, "Head starts in units of
-// work", has the command that measures it).
+// Units of work a millisecond: the median of BuchbergerStats::work / groebner_ms over
+// the benchmark surfaces' runs of 0.4 ms or more (docs/algorithms.md, "Head starts in
+// units of work", has the command that measures it and the spread).
 constexpr double kWorkPerMillisecond = 350000;
 
 }  // namespace
