@@ -50,10 +50,14 @@ unsigned ServerConfig::effective_worker_threads() const {
 std::size_t ServerConfig::effective_max_memory_bytes() const {
   constexpr std::size_t kMiB = std::size_t{1} << 20;
   if (max_memory_mb > 0) return max_memory_mb * kMiB;
-  const long pages = sysconf(_SC_PHYS_PAGES);
-  const long page_size = sysconf(_SC_PAGESIZE);
-  // Unknown memory: a limit that still stops a runaway on any machine this runs on.
-  const std::size_t ram = pages > 0 && page_size > 0 ? static_cast<std::size_t>(pages) * page_size : 4096 * kMiB;
+  // Read once: every request's budget asks, and the machine's memory does not change.
+  static const std::size_t ram = [] {
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long page_size = sysconf(_SC_PAGESIZE);
+    // Unknown memory: a limit that still stops a runaway on any machine this runs on.
+    return pages > 0 && page_size > 0 ? static_cast<std::size_t>(pages) * static_cast<std::size_t>(page_size)
+                                      : 4096 * kMiB;
+  }();
   return std::max(kMiB, ram / 4 * 3 / effective_worker_threads());
 }
 

@@ -12,6 +12,7 @@
 #include "handlers/resultant.hpp"
 #include "handlers/sdf.hpp"
 #include "handlers/static_files.hpp"
+#include "implicitizer/core/budget.hpp"
 #include "implicitizer/core/errors.hpp"
 
 namespace implicitizer::server {
@@ -180,11 +181,9 @@ Computation Router::finish(const Request& request, const std::string& endpoint, 
     ComputationOutcome outcome = ComputationOutcome::ok;
     try {
       budget.check("the wait for a worker");  // timed out or cancelled while queued
-      try {
-        response = inner();
-      } catch (const std::bad_alloc&) {
-        budget.rethrow_bad_alloc("the computation");
-      }
+      // The worker's allocations, and those of the threads it starts, count against
+      // the budget's memory account.
+      response = compute_charging(budget, [&inner] { return inner(); });
     } catch (...) {
       outcome = classify(std::current_exception());
       response = make_exception_response(std::current_exception());

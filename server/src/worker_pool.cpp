@@ -81,13 +81,9 @@ void WorkerPool::work(State& state) {
     }
     // run() does not throw by contract; if it does anyway (out of memory while
     // finishing a response), the job's session is dropped rather than the process.
-    // Its allocations, and those of the threads it starts, count against its budget.
-    {
-      const MemoryScope scope(job.budget.memory_account());
-      try {
-        job.run();
-      } catch (...) {
-      }
+    try {
+      job.run();
+    } catch (...) {
     }
     // glibc keeps freed memory for reuse; after a large computation that would leave
     // the process holding gigabytes (docs/api.md, "Reliability", has the measurement).
