@@ -158,8 +158,8 @@ TEST(Budget, CountCapsNameTheirLimit) {
   budget.set_max_variables(64).set_max_polynomials(1000);
   EXPECT_NO_THROW(budget.check_variables(64, "the ideal"));
   EXPECT_NO_THROW(budget.check_polynomials(1000, "the ideal"));
-  std::string message = limit_message([&] { budget.check_variables(20'000, "the two polynomials"); }, Limit::size);
-  EXPECT_TRUE(contains(message, "the two polynomials has 20000 variables; the limit is 64")) << message;
+  std::string message = limit_message([&] { budget.check_variables(20'000, "the resultant request"); }, Limit::size);
+  EXPECT_TRUE(contains(message, "the resultant request has 20000 variables; the limit is 64")) << message;
   message = limit_message([&] { budget.check_polynomials(30'000, "the ideal"); }, Limit::size);
   EXPECT_TRUE(contains(message, "the ideal has 30000 polynomials; the limit is 1000")) << message;
 }

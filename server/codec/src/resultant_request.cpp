@@ -40,7 +40,7 @@ ResultantAnswer answer_resultant_request(const ResultantRequest& request, Budget
   // Every identifier is a variable of the ring, so the variable must be one of them:
   // a name that occurs nowhere is most likely a typo (`--var s` for t).
   std::vector<std::string> identifiers = collect_identifiers(expressions);
-  budget.check_variables(identifiers.size(), "the two polynomials");
+  budget.check_variables(identifiers.size(), "the resultant request");
   const RingPtr ring = Ring::make(std::move(identifiers));
   const auto var = ring->index_of(request.variable);
   if (!var) {
