@@ -63,7 +63,7 @@ constexpr const char* kUsage =
     "taken); --routes instead times every route (groebner, resultant, interpolation, auto)\n"
     "on each surface beside Singular, with the ratios auto / Singular and\n"
     "auto / min(groebner, resultant, interpolation). --modular runs the groebner route\n"
-    "modulo primes (ImplicitizeOptions::modular_groebner). Defaults: --suite all --method auto --repeat 5\n"
+    "modulo primes (ImplicitizeParams::modular_groebner). Defaults: --suite all --method auto --repeat 5\n"
     "--repeat-below 1 --budget 60 --singular Singular --surfaces " IMPLICITIZER_BENCH_DIR "\n";
 
 /// The command line.
@@ -227,7 +227,7 @@ double process_cpu_ms() {
 OurRun time_implicitize(const Parametrization& p, ImplicitizationMethod method, const Config& config) {
   OurRun run;
   for (int k = 0; k < config.repeat; ++k) {
-    ImplicitizeOptions options;
+    ImplicitizeParams options;
     options.method = method;
     options.modular_groebner = config.modular;
     options.groebner.budget = Budget::with_timeout(config.budget_seconds);

@@ -337,9 +337,9 @@ TargetResult measure_target(const Target& target, const Config& config) {
   out.kind = target.kind;
   out.box = describe_box(target.box);
   const RenderTarget fast =
-      RenderTarget::compile(target.root, SceneOptions{SdfMode::fast, target.box, "scene", "scene"});
+      RenderTarget::compile(target.root, SceneParams{SdfMode::fast, target.box, "scene", "scene"});
   const RenderTarget safe =
-      RenderTarget::compile(target.root, SceneOptions{SdfMode::safe, target.box, "scene", "scene"});
+      RenderTarget::compile(target.root, SceneParams{SdfMode::safe, target.box, "scene", "scene"});
   for (std::size_t i = 0; i < 3; ++i) {
     out.size = std::max(out.size, to_double(target.box.hi[i]) - to_double(target.box.lo[i]));
   }

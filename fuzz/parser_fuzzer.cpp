@@ -51,8 +51,8 @@ Budget make_budget() {
 
 /// Limits wide enough for anything the printer writes: a product of powers prints
 /// exponents beyond the input's 1000 and texts beyond 1 MiB.
-ParseLimits printed_text_limits() {
-  ParseLimits limits;
+ParseParams printed_text_limits() {
+  ParseParams limits;
   limits.max_exponent = static_cast<unsigned>(kMaxTotalDegree);
   limits.max_length = std::size_t{1} << 30;
   return limits;

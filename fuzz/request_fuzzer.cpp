@@ -139,7 +139,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     request.timeout_seconds.reset();
     // One render thread, as the handler asks for.
     answer_within_budget("/v1/render", size, [&request](const Budget& budget) {
-      return answer_render_request(request, budget, RenderLimits{}, 1);
+      return answer_render_request(request, budget, RenderRequestParams{}, 1);
     });
   } catch (const InputError&) {
   }

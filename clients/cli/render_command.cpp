@@ -132,7 +132,7 @@ int run_render_command(std::span<const std::string> args) {
   int status = kExitOk;
   const int answered = run_reporting_errors(report, [&] {
     if (scene_text) request.scene = parse_scene_json(*scene_text, "scene");
-    const RenderAnswer answer = answer_render_request(request, Budget(), RenderLimits{}, threads);
+    const RenderAnswer answer = answer_render_request(request, Budget(), RenderRequestParams{}, threads);
     std::ofstream file(output, std::ios::binary | std::ios::trunc);
     file.write(answer.png.data(), static_cast<std::streamsize>(answer.png.size()));
     file.close();

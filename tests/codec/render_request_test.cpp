@@ -65,7 +65,7 @@ TEST(DecodeRenderRequest, Refusals) {
 
 TEST(AnswerRenderRequest, LimitsAndChoices) {
   auto code = [](RenderRequest r) {
-    const InputError e = input_error_of([&] { answer_render_request(r, Budget(), RenderLimits{}, 1); });
+    const InputError e = input_error_of([&] { answer_render_request(r, Budget(), RenderRequestParams{}, 1); });
     return e.code() + "@" + e.field();
   };
   RenderRequest r;
@@ -108,7 +108,7 @@ TEST(AnswerRenderRequest, ThePngHasTheRequestedSizeAndTheJsonTheStatistics) {
   r.height = 20;
   r.antialiasing = 1;
   r.method = "exact";
-  const RenderAnswer answer = answer_render_request(r, Budget(), RenderLimits{}, 2);
+  const RenderAnswer answer = answer_render_request(r, Budget(), RenderRequestParams{}, 2);
   const Image image = decode_png(answer.png);
   EXPECT_EQ(image.width(), 30u);
   EXPECT_EQ(image.height(), 20u);

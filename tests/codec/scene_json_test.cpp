@@ -18,7 +18,7 @@ using Failure = std::pair<std::string, std::string>;
 // Decodes and compiles (fast mode, scene name "s"); returns the error's code and field.
 Failure failure(const std::string& json, SdfMode mode = SdfMode::fast) {
   try {
-    SceneOptions options;
+    SceneParams options;
     options.mode = mode;
     options.name = "s";
     compile_scene(parse_scene_json(json), options);
@@ -29,7 +29,7 @@ Failure failure(const std::string& json, SdfMode mode = SdfMode::fast) {
 }
 
 CompiledScene compile_json(const std::string& json) {
-  SceneOptions options;
+  SceneParams options;
   options.name = "s";
   return compile_scene(parse_scene_json(json), options);
 }
@@ -82,7 +82,7 @@ TEST(SceneJson, DecodedScenesEvaluate) {
 
 TEST(SceneJson, TheDocumentedExamplesCompile) {
   // docs/api.md: the answer's uniforms, byte for byte.
-  SceneOptions options;
+  SceneParams options;
   options.mode = SdfMode::safe;
   options.name = "demo";
   const CompiledScene api = compile_scene(parse_scene_json(R"({"type": "smooth_union", "k": 0.2, "name": "blend",

@@ -68,7 +68,7 @@ TEST(Implicitize, CurvesAndPointsHaveNoSingleEquation) {
   }
 }
 
-// The Gröbner route modulo primes (ImplicitizeOptions::modular_groebner) gives
+// The Gröbner route modulo primes (ImplicitizeParams::modular_groebner) gives
 // Singular's equation on every public surface and on the hard ones it answers in
 // about a second (tp_22_rational, where Buchberger over ℚ needs more than a minute;
 // tri_cubic), each proven by substitution and minimality; on an image that is not a
@@ -79,7 +79,7 @@ TEST(Implicitize, ModularGroebnerRouteAgreesWithSingular) {
   for (const auto& s : testing::read_surfaces(dir + "surfaces_hard.json")) {
     if (s.name == "tp_22" || s.name == "tp_22_rational" || s.name == "tri_cubic") surfaces.push_back(s);
   }
-  ImplicitizeOptions options;
+  ImplicitizeParams options;
   options.method = ImplicitizationMethod::groebner;
   options.modular_groebner = true;
   for (const auto& s : surfaces) {
@@ -93,7 +93,7 @@ TEST(Implicitize, ModularGroebnerRouteAgreesWithSingular) {
     if (std::ifstream(expected)) {
       expect_same_surface(to_string(r.implicit), testing::read_text(expected));
     } else {
-      ImplicitizeOptions resultant;
+      ImplicitizeParams resultant;
       resultant.method = ImplicitizationMethod::resultant;
       EXPECT_EQ(r.implicit, implicitize(parse_parametrization(s.x, s.y, s.z), resultant).implicit);
     }
@@ -134,7 +134,7 @@ TEST(Implicitize, BudgetExpires) {
   const auto hard = testing::read_surfaces(std::string(IMPLICITIZER_SHARED_DIR) + "/bench/surfaces_hard.json");
   for (const auto& s : hard) {
     if (s.name != "tp_22" && s.name != "tp_33") continue;
-    ImplicitizeOptions options;
+    ImplicitizeParams options;
     options.method = s.name == "tp_22" ? ImplicitizationMethod::groebner : ImplicitizationMethod::resultant;
     options.groebner.budget.set_timeout(s.name == "tp_22" ? 0.05 : 0.002);
     try {
@@ -147,7 +147,7 @@ TEST(Implicitize, BudgetExpires) {
 }
 
 ImplicitizeResult by(ImplicitizationMethod method, const std::string& x, const std::string& y, const std::string& z) {
-  ImplicitizeOptions options;
+  ImplicitizeParams options;
   options.method = method;
   return implicitize(parse_parametrization(x, y, z), options);
 }
@@ -326,7 +326,7 @@ TEST(Implicitize, BasePointsMakeAutoFallBackAndResultantRefuse) {
     EXPECT_FALSE(r.resultant_stats);
     expect_same_surface(to_string(r.implicit), expected[i]);
     // The Gröbner route modulo primes, proven by substitution and minimality.
-    ImplicitizeOptions modular;
+    ImplicitizeParams modular;
     modular.method = ImplicitizationMethod::groebner;
     modular.modular_groebner = true;
     const ImplicitizeResult m = implicitize(parse_parametrization(cases[i][0], cases[i][1], cases[i][2]), modular);
@@ -365,7 +365,7 @@ TEST(Implicitize, PlaneCurvesByBothRoutes) {
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c[0]);
-    ImplicitizeOptions options;
+    ImplicitizeParams options;
     const Parametrization p = parse_parametrization(std::vector<std::string>{c[0], c[1]});
     const ImplicitizeResult r = implicitize(p, options);
     EXPECT_EQ(r.method, "resultant");
@@ -381,7 +381,7 @@ TEST(Implicitize, PlaneCurvesByBothRoutes) {
 }
 
 TEST(Implicitize, PlaneParametrizationsThatAreNotCurves) {
-  ImplicitizeOptions resultant;
+  ImplicitizeParams resultant;
   resultant.method = ImplicitizationMethod::resultant;
   EXPECT_THROW(implicitize(parse_parametrization(std::vector<std::string>{"s", "t"})), NoSingleEquation);
   EXPECT_THROW(implicitize(parse_parametrization(std::vector<std::string>{"s", "t"}), resultant), InputError);
@@ -403,7 +403,7 @@ TEST(Implicitize, ResultantMatricesHaveASizeLimit) {
     EXPECT_EQ(e.limit(), Limit::size);
     EXPECT_NE(std::string(e.what()).find("rows"), std::string::npos);
   }
-  ImplicitizeOptions options;
+  ImplicitizeParams options;
   options.groebner.budget.set_timeout(0.2);
   try {
     const ImplicitizeResult r = implicitize(parse_parametrization(x, y, z), options);

@@ -31,7 +31,7 @@ testing::Surface hard_surface(const std::string& name) {
 Parametrization parametrization_of(const testing::Surface& s) { return parse_parametrization(s.x, s.y, s.z); }
 
 Polynomial by_route(const Parametrization& p, ImplicitizationMethod method) {
-  ImplicitizeOptions options;
+  ImplicitizeParams options;
   options.method = method;
   return implicitize(p, options).implicit;
 }
@@ -270,7 +270,7 @@ TEST(Interpolation, SmallPrimesNeedManyRoundsAndGiveTheSameAnswer) {
   for (const auto& s : surfaces) {
     SCOPED_TRACE(s.name);
     const Parametrization p = parametrization_of(s);
-    InterpolationOptions small;
+    InterpolationParams small;
     small.primes = PrimeSequence::from(1000);
     const InterpolationResult r = implicitize_by_interpolation(p, small);
     expect_well_formed(r, 3);
@@ -288,7 +288,7 @@ TEST(Interpolation, TinyPrimesLoseCountedPointsAndPrimes) {
   // ω = t² + 1 vanishes modulo p (p = 5, 13, 17, …) the points are rejected. The
   // answer is still the resultant's.
   const Parametrization curve = parse_parametrization(std::vector<std::string>{"t^3/(t^2+1)", "t^5-2*t+7"});
-  InterpolationOptions tiny;
+  InterpolationParams tiny;
   tiny.primes = PrimeSequence::from(2);
   const InterpolationResult r = implicitize_by_interpolation(curve, tiny);
   EXPECT_EQ(r.implicit, by_route(curve, ImplicitizationMethod::resultant));
@@ -307,7 +307,7 @@ TEST(Interpolation, TinyPrimesLoseCountedPointsAndPrimes) {
 // The implicit equation of x = s, y = t, z = zed by interpolation over the primes
 // after 1000.
 InterpolationResult graph_over_small_primes(const std::string& zed) {
-  InterpolationOptions small;
+  InterpolationParams small;
   small.primes = PrimeSequence::from(1000);
   return implicitize_by_interpolation(parse_parametrization("s", "t", zed), small);
 }
@@ -354,7 +354,7 @@ TEST(Interpolation, ACorruptedCandidateIsRejectedAndTheRouteGoesOn) {
     const Parametrization p = parametrization_of(hard_surface(name));
     const Polynomial truth = by_route(p, ImplicitizationMethod::resultant);
     int calls = 0;
-    InterpolationOptions options;
+    InterpolationParams options;
     options.tamper_candidate = [&](Polynomial& candidate) {
       if (calls++ == 0) candidate = candidate + Polynomial::constant(candidate.ring(), Rational(1));
     };
@@ -365,7 +365,7 @@ TEST(Interpolation, ACorruptedCandidateIsRejectedAndTheRouteGoesOn) {
     EXPECT_EQ(r.implicit, truth);
   }
   // A tamperer that corrupts every candidate leaves the route nothing to return.
-  InterpolationOptions always;
+  InterpolationParams always;
   always.max_primes = 30;
   always.tamper_candidate = [](Polynomial& candidate) {
     candidate = candidate + Polynomial::variable(candidate.ring(), 0);
@@ -395,7 +395,7 @@ TEST(CheckImplicitEquation, RejectsCorruptedCandidatesAndMultiples) {
 
 TEST(Interpolation, OneOrTwoThreadsGiveTheSameAnswer) {
   const Parametrization p = parametrization_of(hard_surface("tp_22"));
-  InterpolationOptions one, two;
+  InterpolationParams one, two;
   one.threads = 1;
   two.threads = 2;
   const InterpolationResult a = implicitize_by_interpolation(p, one);
@@ -407,7 +407,7 @@ TEST(Interpolation, OneOrTwoThreadsGiveTheSameAnswer) {
 
 TEST(Interpolation, LimitsStopItAndSayWhich) {
   const Parametrization tp33 = parametrization_of(hard_surface("tp_33"));
-  InterpolationOptions quick;
+  InterpolationParams quick;
   quick.budget.set_timeout(0.05);
   try {
     implicitize_by_interpolation(tp33, quick);
@@ -415,7 +415,7 @@ TEST(Interpolation, LimitsStopItAndSayWhich) {
   } catch (const LimitExceeded& e) {
     EXPECT_EQ(e.limit(), Limit::time);
   }
-  InterpolationOptions cancelled;
+  InterpolationParams cancelled;
   cancelled.budget.cancel();
   try {
     implicitize_by_interpolation(tp33, cancelled);
@@ -424,7 +424,7 @@ TEST(Interpolation, LimitsStopItAndSayWhich) {
     EXPECT_EQ(e.limit(), Limit::cancelled);
   }
   // Degree 18 needs 1330 columns; the search goes up to the limit and stops there.
-  InterpolationOptions narrow;
+  InterpolationParams narrow;
   narrow.max_columns = 500;
   try {
     implicitize_by_interpolation(tp33, narrow);
@@ -435,7 +435,7 @@ TEST(Interpolation, LimitsStopItAndSayWhich) {
   }
   // A bound over the limit does not matter when the degree is found below it: the
   // sphere's bound 4 needs 35 columns, its degree 2 only 10.
-  InterpolationOptions tight;
+  InterpolationParams tight;
   tight.max_columns = 10;
   EXPECT_EQ(to_string(implicitize_by_interpolation(
                           parse_parametrization("2*s/(1+s^2+t^2)", "2*t/(1+s^2+t^2)", "(s^2+t^2-1)/(1+s^2+t^2)"), tight)
@@ -444,7 +444,7 @@ TEST(Interpolation, LimitsStopItAndSayWhich) {
 }
 
 TEST(Interpolation, ThroughImplicitize) {
-  ImplicitizeOptions options;
+  ImplicitizeParams options;
   options.method = parse_implicitization_method("interpolation");
   const ImplicitizeResult r =
       implicitize(parse_parametrization("2*s/(1+s^2+t^2)", "2*t/(1+s^2+t^2)", "(s^2+t^2-1)/(1+s^2+t^2)"), options);

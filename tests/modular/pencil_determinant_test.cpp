@@ -94,12 +94,12 @@ TEST(PencilDeterminant, AgreesWithCofactorExpansionOnRandomPencils) {
       const MatrixPencil m = random_pencil(n, k, rng, 1000);
       const RingPtr ring = ring_of(k);
       const Polynomial expected = cofactor_determinant(m, ring, all(n), all(n));
-      PencilDeterminantOptions early;
+      PencilDeterminantParams early;
       early.degree_bound = static_cast<std::int32_t>(n);
       PencilDeterminantStats stats;
       EXPECT_EQ(to_string(pencil_determinant(m, ring, early, &stats)), to_string(expected)) << "k=" << k << " n=" << n;
       EXPECT_FALSE(stats.proven);
-      PencilDeterminantOptions proven = early;
+      PencilDeterminantParams proven = early;
       proven.proven_bits = m.determinant_coefficient_bits();
       EXPECT_EQ(to_string(pencil_determinant(m, ring, proven, &stats)), to_string(expected));
       EXPECT_TRUE(stats.proven);
@@ -121,7 +121,7 @@ TEST(PencilDeterminant, HugeCoefficientsNeedManyPrimes) {
     }
   }
   const RingPtr ring = ring_of(1);
-  PencilDeterminantOptions options;
+  PencilDeterminantParams options;
   options.degree_bound = 5;
   PencilDeterminantStats stats;
   EXPECT_EQ(pencil_determinant(m, ring, options, &stats), cofactor_determinant(m, ring, all(5), all(5)));
@@ -140,7 +140,7 @@ TEST(PencilDeterminant, QuotientByADivisorMinor) {
       for (std::size_t j : f) m.at(part, i, j) = 0;
     }
   }
-  PencilDeterminantOptions options;
+  PencilDeterminantParams options;
   options.degree_bound = 3;
   options.divisor_minor = e;
   EXPECT_EQ(pencil_determinant(m, ring, options), cofactor_determinant(m, ring, f, f));
@@ -159,7 +159,7 @@ TEST(PencilDeterminant, SmallPrimesAreUnluckyAndDropped) {
       m.at(part, i, 3) = 0;
     }
   }
-  PencilDeterminantOptions options;
+  PencilDeterminantParams options;
   options.degree_bound = 2;
   options.divisor_minor = e;
   options.primes = PrimeSequence::from(16);
@@ -173,7 +173,7 @@ TEST(PencilDeterminant, SmallPrimesAreUnluckyAndDropped) {
 TEST(PencilDeterminant, AWrongDegreeBoundIsCaught) {
   std::mt19937_64 rng(1);
   MatrixPencil m = random_pencil(4, 1, rng, 5, 1.0);
-  PencilDeterminantOptions options;
+  PencilDeterminantParams options;
   options.degree_bound = 2;  // the determinant has degree 4
   EXPECT_THROW(pencil_determinant(m, ring_of(1), options), std::logic_error);
 }
@@ -184,7 +184,7 @@ TEST(PencilDeterminant, SingularPencilIsZeroAndProbedAsZero) {
   for (std::size_t part = 0; part <= 3; ++part) {
     for (std::size_t c = 0; c < 4; ++c) m.at(part, 3, c) = m.at(part, 1, c) * 2;
   }
-  PencilDeterminantOptions options;
+  PencilDeterminantParams options;
   options.degree_bound = 4;
   EXPECT_TRUE(pencil_determinant(m, ring_of(3), options).is_zero());
   EXPECT_EQ(probe_pencil_determinant(m, {}), PencilProbe::zero);
@@ -199,7 +199,7 @@ TEST(PencilDeterminant, SingularPencilIsZeroAndProbedAsZero) {
 TEST(PencilDeterminant, BudgetStopsTheEvaluation) {
   std::mt19937_64 rng(4);
   MatrixPencil m = random_pencil(30, 3, rng, 100, 1.0);
-  PencilDeterminantOptions options;
+  PencilDeterminantParams options;
   options.degree_bound = 30;
   options.budget = Budget::with_timeout(0.01);
   try {
@@ -212,7 +212,7 @@ TEST(PencilDeterminant, BudgetStopsTheEvaluation) {
 
 TEST(PencilDeterminant, RefusesMismatchedRingsAndMinors) {
   MatrixPencil m(2, 2);
-  PencilDeterminantOptions options;
+  PencilDeterminantParams options;
   options.degree_bound = 2;
   EXPECT_THROW(pencil_determinant(m, ring_of(3), options), std::invalid_argument);
   options.divisor_minor = {1, 0};

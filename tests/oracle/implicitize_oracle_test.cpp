@@ -96,7 +96,7 @@ TEST_P(ImplicitizeOracle, EquationMatchesSingularAndExpected) {
   const testing::Surface& s = GetParam();
   SCOPED_TRACE(s.name + ": x = " + s.x + ", y = " + s.y + ", z = " + s.z);
   const Parametrization parametrization = parse_parametrization(s.x, s.y, s.z);
-  ImplicitizeOptions options;
+  ImplicitizeParams options;
   options.groebner.budget.set_timeout(30);
   const ImplicitizeResult ours = implicitize(parametrization, options);
   EXPECT_TRUE(ours.verified);
@@ -179,7 +179,7 @@ TEST_P(ResultantOracle, ResultantRouteMatchesSingularsEliminate) {
   const testing::Surface& s = GetParam();
   SCOPED_TRACE(s.name + ": x = " + s.x + ", y = " + s.y + ", z = " + s.z);
   const Parametrization parametrization = parse_parametrization(s.x, s.y, s.z);
-  ImplicitizeOptions options;
+  ImplicitizeParams options;
   options.method = ImplicitizationMethod::resultant;
   const ImplicitizeResult ours = implicitize(parametrization, options);
   EXPECT_EQ(ours.method, "resultant");

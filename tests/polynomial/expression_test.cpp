@@ -16,7 +16,7 @@ using testing::throws_input_error;
 using Kind = Expression::Kind;
 
 ::testing::AssertionResult rejects(const std::string& text, const std::string& code, std::size_t position,
-                                   const ParseLimits& limits = {}) {
+                                   const ParseParams& limits = {}) {
   return throws_input_error([&] { parse_expression(text, limits); }, code, position);
 }
 
@@ -72,7 +72,7 @@ TEST(ExpressionErrors, ExponentTooLarge) {
   EXPECT_TRUE(rejects("x^1001", "exponent_too_large", 2));
   EXPECT_TRUE(rejects("x**99999999999999999999", "exponent_too_large", 3));
   EXPECT_NO_THROW(parse_expression("x^1000"));
-  ParseLimits limits;
+  ParseParams limits;
   limits.max_exponent = 10;
   EXPECT_TRUE(rejects("y+x^11", "exponent_too_large", 4, limits));
   EXPECT_NO_THROW(parse_expression("x^10", limits));
@@ -93,7 +93,7 @@ TEST(ExpressionErrors, IdentifierTooLong) {
   EXPECT_NO_THROW(parse_expression(longest));
   EXPECT_TRUE(rejects(longest + "b", "identifier_too_long", 0));
   EXPECT_TRUE(rejects("x+" + longest + "_", "identifier_too_long", 2));
-  ParseLimits limits;
+  ParseParams limits;
   limits.max_identifier = 3;
   EXPECT_TRUE(rejects("abc*abcd", "identifier_too_long", 4, limits));
 }
@@ -129,14 +129,14 @@ TEST(ExpressionErrors, NestingTooDeep) {
     EXPECT_LT(*e.position(), 300u);  // inside the run of '('
   }
   EXPECT_TRUE(rejects(std::string(300, '-') + "x", "nesting_too_deep", 256));
-  ParseLimits limits;
+  ParseParams limits;
   limits.max_depth = 4;
   EXPECT_TRUE(rejects("----x", "nesting_too_deep", 4, limits));
   EXPECT_NO_THROW(parse_expression("---x", limits));
 }
 
 TEST(ExpressionErrors, InputTooLong) {
-  ParseLimits limits;
+  ParseParams limits;
   limits.max_length = 8;
   EXPECT_TRUE(rejects("x+y+z+x+y", "input_too_long", 0, limits));
   EXPECT_NO_THROW(parse_expression("x+y+z+xy", limits));

@@ -168,7 +168,7 @@ TEST_F(ParserTest, CancelledBudgetStopsParsing) {
 }
 
 TEST_F(ParserTest, ParseLimitsArePassedThrough) {
-  ParseLimits limits;
+  ParseParams limits;
   limits.max_exponent = 3;
   EXPECT_TRUE(throws_input_error([&] { parse_polynomial("x^4", ring_, Budget(), limits); }, "exponent_too_large", 2));
   EXPECT_EQ(parse_polynomial("x^3", ring_, Budget(), limits), x_ * x_ * x_);

@@ -25,7 +25,7 @@ using testing::march_bisection_reference;
 using Vec = std::array<double, 3>;
 
 CompiledScene compile_safe(const SceneNode& root) {
-  SceneOptions options;
+  SceneParams options;
   options.mode = SdfMode::safe;
   return compile_scene(root, options);
 }
@@ -170,7 +170,7 @@ TEST(BisectionReference, StopsAtMaxStepsWithoutAClaim) {
 }
 
 TEST(BisectionReference, RefusesAFastScene) {
-  const CompiledScene fast = compile_scene(make_node(NodeKind::sphere, {{"radius", 1.0}}), SceneOptions{});
+  const CompiledScene fast = compile_scene(make_node(NodeKind::sphere, {{"radius", 1.0}}), SceneParams{});
   EXPECT_THROW(march_bisection_reference(fast, Ray{{0, 0, 5}, {0, 0, -1}}, BisectionReferenceOptions{}),
                std::invalid_argument);
 }

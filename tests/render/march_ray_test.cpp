@@ -229,7 +229,7 @@ TEST(MarchRay, RaysThroughSingularPoints) {
 // beyond the sphere; the check sees that the two unbounding intervals leave a gap
 // and steps back, so the ray still hits the near side.
 TEST(MarchRay, EnhancedStepsBackWhenARelaxedStepJumpsTheSurface) {
-  const RenderTarget target = RenderTarget::compile(make_node(NodeKind::sphere, {{"radius", 1.0}}), SceneOptions{});
+  const RenderTarget target = RenderTarget::compile(make_node(NodeKind::sphere, {{"radius", 1.0}}), SceneParams{});
   MarchParams params = default_march_params(target);
   params.omega = 1.9;
   const MarchResult r = march_ray(target, make_ray({0, 0, 5}, {0, 0, -1}), MarchMethod::enhanced, params);
@@ -240,7 +240,7 @@ TEST(MarchRay, EnhancedStepsBackWhenARelaxedStepJumpsTheSurface) {
 TEST(MarchRay, ExactNeedsAnAlgebraicSurface) {
   const RenderTarget scene = RenderTarget::compile(
       make_node(NodeKind::csg_union, {}, {make_node(NodeKind::sphere, {{"radius", 1.0}}), test::implicit_node("z")}),
-      SceneOptions{});
+      SceneParams{});
   EXPECT_FALSE(is_method_applicable(MarchMethod::exact, scene));
   EXPECT_TRUE(is_method_applicable(MarchMethod::sphere, scene));
   try {

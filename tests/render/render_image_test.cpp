@@ -16,8 +16,8 @@
 namespace implicitizer {
 namespace {
 
-RenderSettings settings_for(const RenderTarget& target, std::size_t w, std::size_t h, std::uint32_t aa) {
-  RenderSettings s;
+RenderParams settings_for(const RenderTarget& target, std::size_t w, std::size_t h, std::uint32_t aa) {
+  RenderParams s;
   s.width = w;
   s.height = h;
   s.antialiasing = aa;
@@ -29,7 +29,7 @@ RenderSettings settings_for(const RenderTarget& target, std::size_t w, std::size
 TEST(RenderImage, ThreadsGiveTheSameImage) {
   const RenderTarget target =
       test::implicit_target("(x^2+y^2+z^2+3)^2-16*(x^2+y^2)", test::axis_box({-3, -3, -1}, {3, 3, 1}));
-  RenderSettings s = settings_for(target, 70, 50, 2);
+  RenderParams s = settings_for(target, 70, 50, 2);
   s.tile_size = 8;
   s.threads = 1;
   const RenderResult one = render_image(target, s);
@@ -49,7 +49,7 @@ TEST(RenderImage, ThreadsGiveTheSameImage) {
 
 TEST(RenderImage, OutOfStepsRaysAreCountedMissesDrawnAsBackground) {
   const RenderTarget target = test::implicit_target("x^2+y^2+z^2-1");
-  RenderSettings s = settings_for(target, 40, 40, 1);
+  RenderParams s = settings_for(target, 40, 40, 1);
   const RenderResult full = render_image(target, s);
   ASSERT_GT(full.stats.hits, 50u);
   EXPECT_EQ(full.stats.out_of_steps, 0u);
@@ -69,7 +69,7 @@ TEST(RenderImage, OutOfStepsRaysAreCountedMissesDrawnAsBackground) {
 
 TEST(RenderImage, TheBudgetStopsTheRenderAndSaysWhy) {
   const RenderTarget target = test::implicit_target("x^2+y^2+z^2-1");
-  const RenderSettings s = settings_for(target, 64, 64, 1);
+  const RenderParams s = settings_for(target, 64, 64, 1);
   Budget cancelled;
   cancelled.cancel();
   try {
@@ -89,8 +89,8 @@ TEST(RenderImage, TheBudgetStopsTheRenderAndSaysWhy) {
 }
 
 TEST(RenderImage, Refusals) {
-  const RenderTarget scene = RenderTarget::compile(make_node(NodeKind::sphere, {{"radius", 1.0}}), SceneOptions{});
-  auto code_of = [&](const RenderSettings& s) {
+  const RenderTarget scene = RenderTarget::compile(make_node(NodeKind::sphere, {{"radius", 1.0}}), SceneParams{});
+  auto code_of = [&](const RenderParams& s) {
     try {
       render_image(scene, s);
     } catch (const InputError& e) {
@@ -98,7 +98,7 @@ TEST(RenderImage, Refusals) {
     }
     return std::string("rendered");
   };
-  RenderSettings s = settings_for(scene, 8, 8, 1);
+  RenderParams s = settings_for(scene, 8, 8, 1);
   EXPECT_EQ(code_of(s), "rendered");
   s.method = MarchMethod::exact;
   EXPECT_EQ(code_of(s), "method_not_applicable@method");

@@ -42,7 +42,7 @@ inline SceneNode implicit_node(const std::string& equation) {
 inline RenderTarget implicit_target(const std::string& equation, const SceneBox& box = SceneBox::default_box(),
                                     SdfMode mode = SdfMode::fast,
                                     EvaluationPrecision precision = EvaluationPrecision::single) {
-  return RenderTarget::compile(implicit_node(equation), SceneOptions{mode, box, "t", "scene"}, precision);
+  return RenderTarget::compile(implicit_node(equation), SceneParams{mode, box, "t", "scene"}, precision);
 }
 
 // A named surface with a box that frames it.

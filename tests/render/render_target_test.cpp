@@ -32,13 +32,13 @@ TEST(RenderTarget, KeepsTheAlgebraicSurfaceOfOnePolynomialLeaf) {
   SceneNode parametric;
   parametric.kind = NodeKind::parametric;
   parametric.leaf.coordinates = {"2*s/(s^2+t^2+1)", "2*t/(s^2+t^2+1)", "(s^2+t^2-1)/(s^2+t^2+1)"};
-  const RenderTarget patch = RenderTarget::compile(parametric, SceneOptions{});
+  const RenderTarget patch = RenderTarget::compile(parametric, SceneParams{});
   ASSERT_TRUE(patch.algebraic().has_value());
   EXPECT_EQ(patch.algebraic()->equation.total_degree(), 2);
 
   const RenderTarget scene = RenderTarget::compile(
       make_node(NodeKind::translate, {{"offset", Vec3<double>{0, 0, 1}}}, {test::implicit_node("x^2+y^2+z^2-1")}),
-      SceneOptions{});
+      SceneParams{});
   EXPECT_FALSE(scene.algebraic().has_value());
 }
 
@@ -66,7 +66,7 @@ TEST(RenderTarget, FloatAndDoubleRunsAgree) {
 
 TEST(RenderTarget, NormalsMatchTheSpheresNormal) {
   const RenderTarget algebraic = implicit_target("x^2+y^2+z^2-1");
-  const RenderTarget primitive = RenderTarget::compile(make_node(NodeKind::sphere, {{"radius", 1.0}}), SceneOptions{});
+  const RenderTarget primitive = RenderTarget::compile(make_node(NodeKind::sphere, {{"radius", 1.0}}), SceneParams{});
   for (const std::array<double, 3>& n : {std::array<double, 3>{0, 0, 1}, {0.6, 0.8, 0}, {-0.48, 0.6, -0.64}}) {
     std::uint64_t evaluations = 0;
     EXPECT_LT(angle_between(algebraic.normal(n, &evaluations), n), 1e-12);

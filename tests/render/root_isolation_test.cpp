@@ -65,7 +65,7 @@ const Polynomial& unit_sphere() {
   return f;
 }
 
-RootIsolationOptions exact_only(RootIsolationOptions options = RootIsolationOptions()) {
+RootIsolationParams exact_only(RootIsolationParams options = RootIsolationParams()) {
   options.method = RootMethod::exact;
   return options;
 }
@@ -77,7 +77,7 @@ struct BothPaths {
 };
 
 BothPaths run_both(const RayPolynomialContext& context, const Vec& o, const Vec& d, double t_min, double t_max,
-                   const RootIsolationOptions& options = RootIsolationOptions()) {
+                   const RootIsolationParams& options = RootIsolationParams()) {
   BothPaths out;
   out.automatic = first_ray_root(context, o, d, t_min, t_max, options);
   out.exact = first_ray_root(context, o, d, t_min, t_max, exact_only(options));
@@ -85,12 +85,12 @@ BothPaths run_both(const RayPolynomialContext& context, const Vec& o, const Vec&
 }
 
 BothPaths run_both(const Polynomial& f, const Vec& o, const Vec& d, double t_min, double t_max,
-                   const RootIsolationOptions& options = RootIsolationOptions()) {
+                   const RootIsolationParams& options = RootIsolationParams()) {
   return run_both(RayPolynomialContext(f), o, d, t_min, t_max, options);
 }
 
 ::testing::AssertionResult paths_agree(const BothPaths& r,
-                                       const RootIsolationOptions& options = RootIsolationOptions()) {
+                                       const RootIsolationParams& options = RootIsolationParams()) {
   if (r.automatic.has_value() != r.exact.has_value()) {
     return ::testing::AssertionFailure() << "automatic " << (r.automatic ? "hits" : "misses") << ", exact "
                                          << (r.exact ? "hits" : "misses");
@@ -106,7 +106,7 @@ BothPaths run_both(const Polynomial& f, const Vec& o, const Vec& d, double t_min
 }
 
 // |t − expected| ≤ tolerance·max(scale, expected) + a few ulps for the closed form.
-void expect_close(double t, double expected, const RootIsolationOptions& options = RootIsolationOptions()) {
+void expect_close(double t, double expected, const RootIsolationParams& options = RootIsolationParams()) {
   EXPECT_LE(std::fabs(t - expected), options.relative_tolerance * std::max(options.scale, expected) + 4e-16 * expected)
       << "t = " << t << ", expected " << expected;
 }
@@ -140,7 +140,7 @@ TEST(RootIsolation, NearTangentRaysMissOrHitNearTheTangency) {
   EXPECT_EQ(hit.automatic->path, RootPath::exact);
   EXPECT_EQ(hit.automatic->fallback, FallbackReason::ill_conditioned_root);
   expect_close(hit.automatic->t, first);
-  RootIsolationOptions loose;
+  RootIsolationParams loose;
   loose.relative_tolerance = 1e-9;
   const BothPaths loose_hit = run_both(unit_sphere(), {-3, y, 0}, {1, 0, 0}, 0, 10, loose);
   ASSERT_TRUE(paths_agree(loose_hit, loose));
@@ -202,7 +202,7 @@ TEST(RootIsolation, RayFromAMillionAwayKeepsRelativeAccuracy) {
   // (ray_polynomial.hpp), where F's terms are of size 1: double, even at relative
   // tolerance 1e-15 (1e-9 here, 9 ulps of t).
   for (const double tolerance : {1e-12, 1e-15}) {
-    RootIsolationOptions options;
+    RootIsolationParams options;
     options.relative_tolerance = tolerance;
     const BothPaths axis = run_both(unit_sphere(), {1e6, 0.5, 0}, {-1, 0, 0}, 0, 2e6, options);
     ASSERT_TRUE(paths_agree(axis, options));
@@ -275,7 +275,7 @@ TEST(RootIsolation, HugeAndTinyCoefficientsAnswerLikeUnitOnes) {
   expect_close(huge.automatic->t,
                5 - sqrt_of(Rational(1) - Rational(0.1) * Rational(0.1) - Rational(0.2) * Rational(0.2)));
   // 1e-30·(sphere of radius 1e-6): scale 1e-6 makes the tolerance relative to the size.
-  RootIsolationOptions micro;
+  RootIsolationParams micro;
   micro.scale = 1e-6;
   const Polynomial tiny = parse_xyz("(x^2+y^2+z^2-1/10^12)/10^30");
   const Vec o{-1e-5, 2e-7, 0};
@@ -305,7 +305,7 @@ TEST(RootIsolation, DegreeEighteenAgreesWithTheExactPath) {
     for (double& x : d) x /= n;
     BothPaths r;
     const auto t0 = std::chrono::steady_clock::now();
-    r.automatic = first_ray_root(context, o, d, 0, 100, RootIsolationOptions(), &stats);
+    r.automatic = first_ray_root(context, o, d, 0, 100, RootIsolationParams(), &stats);
     const auto t1 = std::chrono::steady_clock::now();
     r.exact = first_ray_root(context, o, d, 0, 100, exact_only());
     const auto t2 = std::chrono::steady_clock::now();
@@ -339,7 +339,7 @@ TEST(RootIsolation, RandomRaysAgreeWithTheExactPath) {
       const Vec o{4 * unit(rng), 4 * unit(rng), 4 * unit(rng)};
       const Vec d{unit(rng), unit(rng), unit(rng)};
       BothPaths r;
-      r.automatic = first_ray_root(context, o, d, 0, 20, RootIsolationOptions(), &stats);
+      r.automatic = first_ray_root(context, o, d, 0, 20, RootIsolationParams(), &stats);
       r.exact = first_ray_root(context, o, d, 0, 20, exact_only());
       EXPECT_TRUE(paths_agree(r)) << text << " ray " << i;
     }
@@ -349,7 +349,7 @@ TEST(RootIsolation, RandomRaysAgreeWithTheExactPath) {
 
 TEST(RootIsolation, RefusesInvalidRaysAndOptions) {
   const RayPolynomialContext context(unit_sphere());
-  auto code_of = [&](const Vec& o, const Vec& d, double t0, double t1, const RootIsolationOptions& options) {
+  auto code_of = [&](const Vec& o, const Vec& d, double t0, double t1, const RootIsolationParams& options) {
     try {
       first_ray_root(context, o, d, t0, t1, options);
     } catch (const InputError& e) {
@@ -357,14 +357,14 @@ TEST(RootIsolation, RefusesInvalidRaysAndOptions) {
     }
     return std::string("accepted");
   };
-  const RootIsolationOptions ok;
+  const RootIsolationParams ok;
   EXPECT_EQ(code_of({NAN, 0, 0}, {1, 0, 0}, 0, 1, ok), "invalid_ray/origin");
   EXPECT_EQ(code_of({0, 0, 0}, {0, 0, 0}, 0, 1, ok), "invalid_ray/direction");
   EXPECT_EQ(code_of({0, 0, 0}, {INFINITY, 0, 0}, 0, 1, ok), "invalid_ray/direction");
   EXPECT_EQ(code_of({0, 0, 0}, {1, 0, 0}, -1, 1, ok), "invalid_ray/t_min");
   EXPECT_EQ(code_of({0, 0, 0}, {1, 0, 0}, 2, 1, ok), "invalid_ray/t_max");
   EXPECT_EQ(code_of({0, 0, 0}, {1, 0, 0}, 0, INFINITY, ok), "invalid_ray/t_max");
-  RootIsolationOptions bad = ok;
+  RootIsolationParams bad = ok;
   bad.relative_tolerance = 0;
   EXPECT_EQ(code_of({0, 0, 0}, {1, 0, 0}, 0, 1, bad), "invalid_value/relative_tolerance");
   bad = ok;
@@ -490,7 +490,7 @@ TEST(RootIsolation, PublicSurfacesAt256x256) {
     std::array<RootIsolationStats, 3> stats;
     const std::array<double, 3> tolerances{1e-12, 1e-9, 1e-15};
     for (std::size_t m = 0; m < tolerances.size(); ++m) {
-      RootIsolationOptions options;
+      RootIsolationParams options;
       options.relative_tolerance = tolerances[m];
       const auto start = std::chrono::steady_clock::now();
       for (std::size_t k = 0; k < rays.size(); ++k) {

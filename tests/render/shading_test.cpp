@@ -12,7 +12,7 @@ namespace implicitizer {
 namespace {
 
 RenderTarget unit_sphere() {
-  return RenderTarget::compile(make_node(NodeKind::sphere, {{"radius", 1.0}}), SceneOptions{});
+  return RenderTarget::compile(make_node(NodeKind::sphere, {{"radius", 1.0}}), SceneParams{});
 }
 
 TEST(SoftShadow, NothingInTheWayIsFullyLit) {
@@ -47,7 +47,7 @@ TEST(AmbientOcclusion, OpenSurfaceIsUnoccludedAndACreviceIsNot) {
                                       {make_node(NodeKind::sphere, {{"radius", 1.0}}),
                                        make_node(NodeKind::translate, {{"offset", Vec3<double>{0, 0, 2.6}}},
                                                  {make_node(NodeKind::sphere, {{"radius", 1.0}})})}),
-                            SceneOptions{});
+                            SceneParams{});
   std::uint64_t evaluations = 0;
   const double ao = ambient_occlusion(pair, {0, 0, 1}, {0, 0, 1}, 4, &evaluations);
   EXPECT_LT(ao, 0.9);

@@ -92,7 +92,7 @@ TEST(AuxiliaryResultant, BudgetStopsIt) {
       "1", "3+2*t^2+t^3-3*s-5*s*t+s^2-2*s^2*t-3*s^2*t^2-3*s^2*t^3+4*s^3-3*s^3*t+3*s^3*t^2-s^3*t^3",
       "3+t-2*t^2-4*t^3-3*s+s*t+5*s*t^2+2*s*t^3+4*s^2-s^2*t-5*s^2*t^2+s^2*t^3-5*s^3-3*s^3*t-5*s^3*t^2+3*s^3*t^3",
       "-2-2*t-4*t^2-5*t^3+3*s-3*s*t-4*s*t^2-4*s*t^3-s^2+3*s^2*t-3*s^2*t^2-2*s^2*t^3+3*s^3+5*s^3*t-2*s^3*t^2+2*s^3*t^3");
-  AuxiliaryResultantOptions options;
+  AuxiliaryResultantParams options;
   options.budget = Budget::with_timeout(0.001);
   try {
     auxiliary_resultant(sys, space_ring(), options);

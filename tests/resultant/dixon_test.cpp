@@ -17,7 +17,7 @@ using testing::space_ring;
 using testing::substituted;
 
 Polynomial determinant(const MatrixPencil& m, std::int32_t bound) {
-  PencilDeterminantOptions options;
+  PencilDeterminantParams options;
   options.degree_bound = bound;
   options.proven_bits = m.determinant_coefficient_bits();
   return pencil_determinant(m, space_ring(), options);

@@ -16,7 +16,7 @@ using testing::space_ring;
 using testing::substituted;
 
 Polynomial quotient(const MacaulayPencil& m, std::int32_t bound) {
-  PencilDeterminantOptions options;
+  PencilDeterminantParams options;
   options.degree_bound = bound;
   options.divisor_minor = m.extraneous;
   options.stable_primes = 3;

@@ -368,7 +368,7 @@ TEST(CompiledScene, TooLargeScenesAreRefused) {
 TEST(CompiledScene, BudgetStopsCompilation) {
   Budget budget;
   budget.cancel();
-  EXPECT_THROW(compile_scene(sphere(1), SceneOptions{}, budget), LimitExceeded);
+  EXPECT_THROW(compile_scene(sphere(1), SceneParams{}, budget), LimitExceeded);
 }
 
 }  // namespace

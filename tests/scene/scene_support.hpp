@@ -49,7 +49,7 @@ inline SceneNode parametric(const std::string& x, const std::string& y, const st
 }
 
 inline CompiledScene compile(const SceneNode& root, SdfMode mode = SdfMode::fast, const std::string& name = "s") {
-  SceneOptions options;
+  SceneParams options;
   options.mode = mode;
   options.name = name;
   return compile_scene(root, options);

@@ -101,7 +101,7 @@ Comparison run_case(const Case& c) {
   const FastSdf sdf = FastSdf::build(f, box);
   const std::string function = std::string(c.name) + "_sdf";
   // The text the user gets (sdf_glsl) is the text that runs.
-  const std::string glsl = sdf_glsl(f, SdfOptions{SdfMode::fast, box, c.name});
+  const std::string glsl = sdf_glsl(f, SdfParams{SdfMode::fast, box, c.name});
   EXPECT_EQ(glsl, sdf.to_glsl(function));
   const std::vector<float> xyz = sample_points(c);
 
@@ -168,7 +168,7 @@ void run_safe_case(const Case& c) {
   const SceneBox box = box_of(c.box[0], c.box[1], c.box[2], c.box[3], c.box[4], c.box[5]);
   const SafeSdf sdf = SafeSdf::build(f, box);
   const std::string function = std::string(c.name) + "_sdf";
-  const std::string glsl = sdf_glsl(f, SdfOptions{SdfMode::safe, box, c.name});
+  const std::string glsl = sdf_glsl(f, SdfParams{SdfMode::safe, box, c.name});
   EXPECT_EQ(glsl, sdf.to_glsl(function));
   const std::vector<float> xyz = sample_points(c);
   std::string error;

@@ -16,7 +16,7 @@ using testing::parse_xyz;
 constexpr const char* kEs300 = "#version 300 es\nprecision highp float;";
 constexpr const char* kGlsl330 = "#version 330";
 
-void expect_compiles(const Polynomial& f, const SdfOptions& options) {
+void expect_compiles(const Polynomial& f, const SdfParams& options) {
   const std::string glsl = sdf_glsl(f, options);
   EXPECT_EQ(glsl.find("pow"), std::string::npos);
   EXPECT_NE(glsl.find("float " + options.name + "_sdf(vec3 p)"), std::string::npos);
@@ -25,25 +25,25 @@ void expect_compiles(const Polynomial& f, const SdfOptions& options) {
 }
 
 TEST(SdfGlsl, SphereCompilesInBothDialects) {
-  expect_compiles(parse_xyz("x^2+y^2+z^2-1"), SdfOptions{SdfMode::fast, SceneBox::default_box(), "sphere"});
+  expect_compiles(parse_xyz("x^2+y^2+z^2-1"), SdfParams{SdfMode::fast, SceneBox::default_box(), "sphere"});
 }
 
 TEST(SdfGlsl, TorusCompilesInBothDialects) {
   expect_compiles(parse_xyz("x^4+2*x^2*y^2+y^4+2*x^2*z^2+2*y^2*z^2+z^4-10*x^2-10*y^2+6*z^2+9"),
-                  SdfOptions{SdfMode::fast, testing::box_of("-3", "-3", "-1", "3", "3", "1"), "torus"});
+                  SdfParams{SdfMode::fast, testing::box_of("-3", "-3", "-1", "3", "3", "1"), "torus"});
 }
 
 TEST(SdfGlsl, SteinerSurfaceCompilesInBothDialects) {
-  expect_compiles(parse_xyz("x^2*y^2+y^2*z^2+z^2*x^2-x*y*z"), SdfOptions{SdfMode::fast, SceneBox::default_box(), "steiner"});
+  expect_compiles(parse_xyz("x^2*y^2+y^2*z^2+z^2*x^2-x*y*z"), SdfParams{SdfMode::fast, SceneBox::default_box(), "steiner"});
 }
 
 TEST(SdfGlsl, Degree18Tp33CompilesInBothDialects) {
   expect_compiles(testing::tp33_implicit(),
-                  SdfOptions{SdfMode::fast, testing::box_of("-8", "-10", "-18", "8", "6", "4"), "tp_33"});
+                  SdfParams{SdfMode::fast, testing::box_of("-8", "-10", "-18", "8", "6", "4"), "tp_33"});
 }
 
 TEST(SdfGlsl, DefinesOnlyTheFunction) {
-  const std::string glsl = sdf_glsl(parse_xyz("x^2+y^2+z^2-1"), SdfOptions{});
+  const std::string glsl = sdf_glsl(parse_xyz("x^2+y^2+z^2-1"), SdfParams{});
   // One function definition: the first '(' after a type at line start is ours.
   std::size_t functions = 0;
   for (std::size_t at = glsl.find("\nfloat "); at != std::string::npos; at = glsl.find("\nfloat ", at + 1)) {
@@ -55,24 +55,24 @@ TEST(SdfGlsl, DefinesOnlyTheFunction) {
 }
 
 TEST(SdfGlsl, SafeSphereTorusAndSteinerCompileInBothDialects) {
-  expect_compiles(parse_xyz("x^2+y^2+z^2-1"), SdfOptions{SdfMode::safe, SceneBox::default_box(), "sphere"});
+  expect_compiles(parse_xyz("x^2+y^2+z^2-1"), SdfParams{SdfMode::safe, SceneBox::default_box(), "sphere"});
   expect_compiles(parse_xyz("x^4+2*x^2*y^2+y^4+2*x^2*z^2+2*y^2*z^2+z^4-10*x^2-10*y^2+6*z^2+9"),
-                  SdfOptions{SdfMode::safe, testing::box_of("-3", "-3", "-1", "3", "3", "1"), "torus"});
+                  SdfParams{SdfMode::safe, testing::box_of("-3", "-3", "-1", "3", "3", "1"), "torus"});
   expect_compiles(parse_xyz("x^2*y^2+y^2*z^2+z^2*x^2-x*y*z"),
-                  SdfOptions{SdfMode::safe, SceneBox::default_box(), "steiner"});
+                  SdfParams{SdfMode::safe, SceneBox::default_box(), "steiner"});
   expect_compiles(parse_xyz("1e-30*((x-1e-3)^2+(y-2*1e-3)^2+(z+1e-3)^2-1e-12)"),
-                  SdfOptions{SdfMode::safe,
+                  SdfParams{SdfMode::safe,
                              testing::box_of("0.999e-3", "1.999e-3", "-1.001e-3", "1.001e-3", "2.001e-3", "-0.999e-3"),
                              "tiny"});
 }
 
 TEST(SdfGlsl, SafeDegree18Tp33CompilesInBothDialects) {
   expect_compiles(testing::tp33_implicit(),
-                  SdfOptions{SdfMode::safe, testing::box_of("-8", "-10", "-18", "8", "6", "4"), "tp_33"});
+                  SdfParams{SdfMode::safe, testing::box_of("-8", "-10", "-18", "8", "6", "4"), "tp_33"});
 }
 
 TEST(SdfGlsl, SafeModeDefinesOnlyTheFunction) {
-  const std::string glsl = sdf_glsl(parse_xyz("x^2+y^2+z^2-1"), SdfOptions{SdfMode::safe, SceneBox::default_box(), "a"});
+  const std::string glsl = sdf_glsl(parse_xyz("x^2+y^2+z^2-1"), SdfParams{SdfMode::safe, SceneBox::default_box(), "a"});
   std::size_t functions = 0;
   for (std::size_t at = glsl.find("\nfloat "); at != std::string::npos; at = glsl.find("\nfloat ", at + 1)) {
     ++functions;
@@ -95,7 +95,7 @@ TEST(SdfGlsl, ParsesModesAndRefusesOthers) {
   }
   // Mode safe refuses what fp32 cannot bound (SafeSdf::build).
   try {
-    (void)sdf_glsl(parse_xyz("x^60+y"), SdfOptions{SdfMode::safe, SceneBox::default_box(), "a"});
+    (void)sdf_glsl(parse_xyz("x^60+y"), SdfParams{SdfMode::safe, SceneBox::default_box(), "a"});
     ADD_FAILURE() << "accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.code(), "degree_too_high");
@@ -103,10 +103,10 @@ TEST(SdfGlsl, ParsesModesAndRefusesOthers) {
 }
 
 TEST(SdfGlsl, ValidatesTheNameBeforeAnythingElse) {
-  EXPECT_THROW((void)sdf_glsl(parse_xyz("x"), SdfOptions{SdfMode::fast, SceneBox::default_box(), "a(){}; void b"}),
+  EXPECT_THROW((void)sdf_glsl(parse_xyz("x"), SdfParams{SdfMode::fast, SceneBox::default_box(), "a(){}; void b"}),
                InputError);
   // Issue 16: "gl" itself is an identifier, but the function would be gl_sdf.
-  EXPECT_THROW((void)sdf_glsl(parse_xyz("x"), SdfOptions{SdfMode::fast, SceneBox::default_box(), "gl"}), InputError);
+  EXPECT_THROW((void)sdf_glsl(parse_xyz("x"), SdfParams{SdfMode::fast, SceneBox::default_box(), "gl"}), InputError);
 }
 
 }  // namespace

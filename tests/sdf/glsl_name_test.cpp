@@ -55,7 +55,7 @@ TEST(GlslName, AcceptedNamesNextToTheReservedOnesCompile) {
   const Polynomial sphere = testing::parse_xyz("x^2+y^2+z^2-1");
   for (const char* name : {"GL", "Gl", "g", "gl0", "_gl", "glx_y"}) {
     for (const SdfMode mode : {SdfMode::fast, SdfMode::safe}) {
-      const std::string glsl = sdf_glsl(sphere, SdfOptions{mode, SceneBox::default_box(), name});
+      const std::string glsl = sdf_glsl(sphere, SdfParams{mode, SceneBox::default_box(), name});
       for (const char* header : {"#version 300 es\nprecision highp float;", "#version 330"}) {
         EXPECT_EQ(testing::glslang_errors(header, glsl, std::string(name) + "_sdf"), "") << name << "\n" << glsl;
       }

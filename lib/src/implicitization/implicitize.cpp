@@ -92,7 +92,7 @@ ImplicitizationIdeal implicitization_ideal(const Parametrization& p) {
 }
 
 // The generator of the elimination ideal (Theorem 1.9 with the lcm).
-ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeOptions& options) {
+ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeParams& options) {
   const ImplicitizationIdeal ideal = implicitization_ideal(p);
   const std::size_t n = p.coordinates.size();
   const EliminationResult elimination = eliminate(ideal.generators, ideal.eliminated, options.groebner);
@@ -124,7 +124,7 @@ ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeOptions
 // degree there is). The route verifies what it returns.
 std::optional<ImplicitizeResult> by_interpolation_up_to(const Parametrization& p, std::int32_t max_degree,
                                                         const Budget& budget) {
-  InterpolationOptions interpolation;
+  InterpolationParams interpolation;
   interpolation.budget = budget;
   std::optional<InterpolationResult> answer = implicitize_by_interpolation_up_to(p, max_degree, interpolation);
   if (!answer) return std::nullopt;
@@ -148,7 +148,7 @@ ImplicitizeResult by_interpolation(const Parametrization& p, const Budget& budge
 // the monomials of its degree at points of the image, and a hypersurface image;
 // interpolation.hpp has the argument). nullopt where the lifted ideal has no single
 // generator or the proof does not go through: the caller then runs Buchberger over ℚ.
-std::optional<ImplicitizeResult> by_modular_groebner(const Parametrization& p, const ImplicitizeOptions& options) {
+std::optional<ImplicitizeResult> by_modular_groebner(const Parametrization& p, const ImplicitizeParams& options) {
   const ImplicitizationIdeal ideal = implicitization_ideal(p);
   const std::size_t n = p.coordinates.size();
   ModularGroebnerParams params;
@@ -163,7 +163,7 @@ std::optional<ImplicitizeResult> by_modular_groebner(const Parametrization& p, c
   const std::size_t identity[3] = {0, 1, 2};
   result.implicit = elimination.elimination.front().map_to(implicit_ring(n), std::span(identity, n)).primitive_part();
   const auto verify_start = Clock::now();
-  InterpolationOptions check;
+  InterpolationParams check;
   check.budget = options.groebner.budget;
   const ImplicitEquationCheck proof = check_implicit_equation(result.implicit, p, check);
   result.verify_ms = std::chrono::duration<double, std::milli>(Clock::now() - verify_start).count();
@@ -227,8 +227,8 @@ std::optional<ImplicitizeResult> from_resultant(const Parametrization& p, const 
   throw std::logic_error("internal error: the auxiliary resultant does not give the implicit equation");
 }
 
-AuxiliaryResultantOptions resultant_options(const Budget& budget, std::size_t stable_primes) {
-  AuxiliaryResultantOptions options;
+AuxiliaryResultantParams resultant_options(const Budget& budget, std::size_t stable_primes) {
+  AuxiliaryResultantParams options;
   options.budget = budget;
   options.stable_primes = stable_primes;
   return options;
@@ -259,11 +259,11 @@ std::optional<ImplicitizeResult> by_resultant(const Parametrization& p, const Bu
 // when the allowance stops it, and when the term limit does (the routes that follow
 // may fit it: interpolation's kernels have one term per column). The caller's own
 // deadline, memory limit and cancellation still throw.
-std::optional<ImplicitizeResult> groebner_within(const Parametrization& p, const ImplicitizeOptions& options,
+std::optional<ImplicitizeResult> groebner_within(const Parametrization& p, const ImplicitizeParams& options,
                                                  std::uint64_t work) {
   try {
     return try_within(options.groebner.budget, work, [&](const Budget& trial) {
-      ImplicitizeOptions limited = options;
+      ImplicitizeParams limited = options;
       limited.groebner.budget = trial;
       return by_groebner(p, limited);
     });
@@ -303,7 +303,7 @@ constexpr double kBaseHeadStartMs = 0.5;
 
 }  // namespace
 
-ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeOptions& options) {
+ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeParams& options) {
   const auto start = Clock::now();
   const Budget& budget = options.groebner.budget;
   // The resultant route eliminates one parameter per coordinate but one: a surface

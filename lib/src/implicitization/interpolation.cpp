@@ -665,7 +665,7 @@ Polynomial polynomial_of(const MonomialBasis& basis, const std::vector<Integer>&
 // The search for the degree and the Chinese remaindering, prime by prime.
 class InterpolationDriver {
  public:
-  InterpolationDriver(const Parametrization& p, const InterpolationOptions& options)
+  InterpolationDriver(const Parametrization& p, const InterpolationParams& options)
       : parametrization_(p), options_(options), forms_(map_forms(p)), primes_(options.primes) {}
 
   // The equation, or nullopt when its degree is proven above `max_degree` (only
@@ -875,7 +875,7 @@ class InterpolationDriver {
   }
 
   const Parametrization& parametrization_;
-  const InterpolationOptions& options_;
+  const InterpolationParams& options_;
   MapForms forms_;
   PrimeSequence primes_;
   std::size_t taken_ = 0;
@@ -900,7 +900,7 @@ std::int32_t implicit_degree_bound(const Parametrization& parametrization) {
 }
 
 InterpolationResult implicitize_by_interpolation(const Parametrization& parametrization,
-                                                 const InterpolationOptions& options) {
+                                                 const InterpolationParams& options) {
   const std::size_t n = parametrization.coordinates.size();
   if (n != 2 && n != 3) throw std::invalid_argument("implicitize_by_interpolation: two or three coordinates expected");
   return *InterpolationDriver(parametrization, options).run();
@@ -908,7 +908,7 @@ InterpolationResult implicitize_by_interpolation(const Parametrization& parametr
 
 std::optional<InterpolationResult> implicitize_by_interpolation_up_to(const Parametrization& parametrization,
                                                                       std::int32_t max_degree,
-                                                                      const InterpolationOptions& options) {
+                                                                      const InterpolationParams& options) {
   const std::size_t n = parametrization.coordinates.size();
   if (n != 2 && n != 3) {
     throw std::invalid_argument("implicitize_by_interpolation_up_to: two or three coordinates expected");
@@ -918,7 +918,7 @@ std::optional<InterpolationResult> implicitize_by_interpolation_up_to(const Para
 }
 
 ImplicitEquationCheck check_implicit_equation(const Polynomial& candidate, const Parametrization& parametrization,
-                                              const InterpolationOptions& options) {
+                                              const InterpolationParams& options) {
   ImplicitEquationCheck check;
   const MapForms forms = map_forms(parametrization);
   const std::size_t n = forms.coordinates;

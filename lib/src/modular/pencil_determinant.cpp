@@ -149,7 +149,7 @@ DenseSupport support_of(std::size_t k, std::size_t points, std::int32_t degree_b
 // differences only look at the values before them. Each Q_k is then a problem of
 // the same shape with degree D − k, one dimension lower. Finally the Newton
 // coefficients are converted to monomial ones along each axis (Horner).
-std::optional<std::vector<mp_limb_t>> image_modulo(const MatrixPencil& pencil, const PencilDeterminantOptions& options,
+std::optional<std::vector<mp_limb_t>> image_modulo(const MatrixPencil& pencil, const PencilDeterminantParams& options,
                                                    const DenseSupport& support, mp_limb_t p, std::uint64_t seed,
                                                    std::size_t& evaluations) {
   const std::size_t k = pencil.num_variables();
@@ -298,7 +298,7 @@ class CrtAccumulator {
 
 }  // namespace
 
-Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, const PencilDeterminantOptions& options,
+Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, const PencilDeterminantParams& options,
                               PencilDeterminantStats* stats_out) {
   const std::size_t k = pencil.num_variables();
   if (ring->num_variables() != k) throw std::invalid_argument("pencil_determinant: ring and pencil differ in variables");

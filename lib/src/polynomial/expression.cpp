@@ -33,7 +33,7 @@ std::string describe(char c) {
 
 class Lexer {
  public:
-  Lexer(std::string_view text, const ParseLimits& limits) : text_(text), limits_(limits) {}
+  Lexer(std::string_view text, const ParseParams& limits) : text_(text), limits_(limits) {}
 
   Token next() {
     while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\n' ||
@@ -124,7 +124,7 @@ class Lexer {
   }
 
   std::string_view text_;
-  const ParseLimits& limits_;
+  const ParseParams& limits_;
   std::size_t pos_ = 0;
 };
 
@@ -181,7 +181,7 @@ std::unique_ptr<Expression> wrap(Expression::Kind kind, std::size_t position, st
 // so `^` binds tighter than unary minus and than `*` and `/`.
 class Parser {
  public:
-  Parser(std::string_view text, const ParseLimits& limits) : lexer_(text, limits), limits_(limits) { advance(); }
+  Parser(std::string_view text, const ParseParams& limits) : lexer_(text, limits), limits_(limits) { advance(); }
 
   std::unique_ptr<Expression> parse() {
     if (current_.kind == Token::Kind::end) throw InputError("empty_input", "empty expression", 0);
@@ -333,7 +333,7 @@ class Parser {
   }
 
   Lexer lexer_;
-  const ParseLimits& limits_;
+  const ParseParams& limits_;
   Token current_;
   std::size_t depth_ = 0;
 };
@@ -345,7 +345,7 @@ void collect(const Expression& e, std::vector<std::string>& out, std::set<std::s
 
 }  // namespace
 
-std::unique_ptr<Expression> parse_expression(std::string_view text, const ParseLimits& limits) {
+std::unique_ptr<Expression> parse_expression(std::string_view text, const ParseParams& limits) {
   if (text.size() > limits.max_length) {
     throw InputError("input_too_long", "expression longer than " + std::to_string(limits.max_length) + " bytes", 0);
   }

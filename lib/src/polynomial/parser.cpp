@@ -110,7 +110,7 @@ RationalFunction evaluate_rational_function(const Expression& e, const RingPtr& 
 }
 
 Polynomial parse_polynomial(std::string_view text, const RingPtr& ring, const Budget& budget,
-                            const ParseLimits& limits) {
+                            const ParseParams& limits) {
   return evaluate_polynomial(*parse_expression(text, limits), ring, budget);
 }
 

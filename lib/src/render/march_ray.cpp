@@ -234,7 +234,7 @@ void march_exact(const RenderTarget& target, const Ray& ray, const MarchParams& 
         a.program.evaluate(origin[0] + t0 * direction[0], origin[1] + t0 * direction[1], origin[2] + t0 * direction[2]);
     if (start.value < 0) return hit_at(r, t0);
   }
-  RootIsolationOptions options;
+  RootIsolationParams options;
   options.scale = target.length_unit();
   const std::optional<RayRoot> root =
       first_ray_root(*a.ray_context, origin, direction, t0, t1, options, nullptr, budget);

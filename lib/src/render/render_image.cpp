@@ -23,7 +23,7 @@ struct WorkerStats {
 
 class TileRenderer {
  public:
-  TileRenderer(const RenderTarget& target, const RenderSettings& settings, const Budget& budget, Image& image)
+  TileRenderer(const RenderTarget& target, const RenderParams& settings, const Budget& budget, Image& image)
       : target_(target),
         settings_(settings),
         budget_(budget),
@@ -98,7 +98,7 @@ class TileRenderer {
   }
 
   const RenderTarget& target_;
-  const RenderSettings& settings_;
+  const RenderParams& settings_;
   const Budget& budget_;
   const Camera camera_;
   Image& image_;
@@ -128,7 +128,7 @@ MarchParams default_render_march_params(const RenderTarget& target, const Camera
   return params;
 }
 
-RenderResult render_image(const RenderTarget& target, const RenderSettings& settings, const Budget& budget) {
+RenderResult render_image(const RenderTarget& target, const RenderParams& settings, const Budget& budget) {
   if (settings.antialiasing == 0 || settings.antialiasing > 8) {
     throw InputError("invalid_value", "antialiasing must be 1 to 8 (AA×AA samples per pixel)").in_field("aa");
   }

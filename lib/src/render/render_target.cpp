@@ -23,7 +23,7 @@ std::array<double, 3> normalised(const std::array<double, 3>& v) {
 
 }  // namespace
 
-RenderTarget RenderTarget::compile(const SceneNode& root, const SceneOptions& options, EvaluationPrecision precision,
+RenderTarget RenderTarget::compile(const SceneNode& root, const SceneParams& options, EvaluationPrecision precision,
                                    const Budget& budget) {
   RenderTarget target(compile_scene(root, options, budget), precision);
   double half = 0;

@@ -157,7 +157,7 @@ SegmentRootSearch undecided(FallbackReason reason, int subdivisions) {
 // sign while the bracket is still wider than that means double cannot pin the root:
 // ill-conditioned (std::nullopt).
 std::optional<double> refine_on_ray(const RayPolynomialContext& context, const RaySegment& segment, double lo,
-                                    double hi, int sign_lo, const RootIsolationOptions& options) {
+                                    double hi, int sign_lo, const RootIsolationParams& options) {
   // The answer (lo + hi)/2 is within (hi − lo)/2 of the root, which is ≥ lo: the
   // bracket is narrow enough at 2·tolerance_at(lo). Probes are placed by the
   // tolerance at the candidate, shrunk by (1 − rel) so that the bracket they leave
@@ -292,7 +292,7 @@ InputError invalid_ray(const std::string& field, const std::string& message) {
 }
 
 void validate(const std::array<double, 3>& origin, const std::array<double, 3>& direction, double t_min, double t_max,
-              const RootIsolationOptions& options) {
+              const RootIsolationParams& options) {
   for (double x : origin) {
     if (!std::isfinite(x)) throw invalid_ray("origin", "the ray's origin must be finite");
   }
@@ -347,7 +347,7 @@ void RootIsolationStats::add(const RootIsolationStats& other) {
 }
 
 SegmentRootSearch isolate_first_root_bernstein(const RayPolynomialContext& context, const RaySegment& segment,
-                                               const DoubleRayPolynomial& q, const RootIsolationOptions& options) {
+                                               const DoubleRayPolynomial& q, const RootIsolationParams& options) {
   const std::size_t n = q.coefficients.size() - 1;
   const std::size_t size = n + 1;
   thread_local BernsteinWorkspace w;
@@ -430,7 +430,7 @@ SegmentRootSearch isolate_first_root_bernstein(const RayPolynomialContext& conte
 }
 
 SegmentRootSearch isolate_first_root_descartes(const std::vector<Integer>& q, double t_begin, double t_end,
-                                               const RootIsolationOptions& options, const Budget& budget) {
+                                               const RootIsolationParams& options, const Budget& budget) {
   if (q.empty() || sgn(q.front()) == 0) return root_at(t_begin, 0);  // q ≡ 0 or q(0) = 0
   FmpzPoly p;
   {
@@ -536,7 +536,7 @@ SegmentRootSearch isolate_first_root_descartes(const std::vector<Integer>& q, do
 
 std::optional<RayRoot> first_ray_root(const RayPolynomialContext& context, const std::array<double, 3>& origin,
                                       const std::array<double, 3>& direction, double t_min, double t_max,
-                                      const RootIsolationOptions& options, RootIsolationStats* stats,
+                                      const RootIsolationParams& options, RootIsolationStats* stats,
                                       const Budget& budget) {
   validate(origin, direction, t_min, t_max, options);
   const RaySegment segment{origin, direction, t_min, t_max};
@@ -570,7 +570,7 @@ std::optional<RayRoot> first_ray_root(const RayPolynomialContext& context, const
 
 std::optional<RayRoot> first_ray_root(const Polynomial& f, const std::array<double, 3>& origin,
                                       const std::array<double, 3>& direction, double t_min, double t_max,
-                                      const RootIsolationOptions& options, RootIsolationStats* stats,
+                                      const RootIsolationParams& options, RootIsolationStats* stats,
                                       const Budget& budget) {
   validate(origin, direction, t_min, t_max, options);
   return first_ray_root(RayPolynomialContext(f), origin, direction, t_min, t_max, options, stats, budget);

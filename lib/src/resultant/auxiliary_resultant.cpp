@@ -50,7 +50,7 @@ double AuxiliaryResultantPlan::predicted_operations() const {
 }
 
 AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>& input,
-                                                const AuxiliaryResultantOptions& options) {
+                                                const AuxiliaryResultantParams& options) {
   const auto start = Clock::now();
   // One common integer factor for ω, ξ, η, ζ (the resultant changes by a constant).
   std::array<Polynomial, 4> wxyz = input;
@@ -124,11 +124,11 @@ AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>&
 }
 
 AuxiliaryResultant compute_auxiliary_resultant(const AuxiliaryResultantPlan& plan, const RingPtr& space,
-                                               const AuxiliaryResultantOptions& options) {
+                                               const AuxiliaryResultantParams& options) {
   if (space->num_variables() != 3) throw std::invalid_argument("auxiliary_resultant: the space ring needs x, y, z");
   AuxiliaryResultant result{Polynomial(space), plan.stats};
   if (!plan.formulation) return result;
-  PencilDeterminantOptions determinant;
+  PencilDeterminantParams determinant;
   determinant.degree_bound = plan.degree_bound;
   determinant.divisor_minor = plan.minor;
   if (plan.minor.empty()) determinant.proven_bits = plan.matrix.determinant_coefficient_bits();
@@ -142,7 +142,7 @@ AuxiliaryResultant compute_auxiliary_resultant(const AuxiliaryResultantPlan& pla
 }
 
 AuxiliaryResultant auxiliary_resultant(const std::array<Polynomial, 4>& wxyz, const RingPtr& space,
-                                       const AuxiliaryResultantOptions& options) {
+                                       const AuxiliaryResultantParams& options) {
   if (space->num_variables() != 3) throw std::invalid_argument("auxiliary_resultant: the space ring needs x, y, z");
   return compute_auxiliary_resultant(plan_auxiliary_resultant(wxyz, options), space, options);
 }

@@ -41,7 +41,7 @@ MatrixPencil curve_sylvester_pencil(const std::array<Polynomial, 3>& wxy) {
 }
 
 AuxiliaryResultant curve_auxiliary_resultant(const std::array<Polynomial, 3>& input, const RingPtr& plane,
-                                             const AuxiliaryResultantOptions& options) {
+                                             const AuxiliaryResultantParams& options) {
   const auto start = std::chrono::steady_clock::now();
   if (plane->num_variables() != 2) throw std::invalid_argument("curve_auxiliary_resultant: the plane ring needs x, y");
   // One common integer factor for ω, ξ, η (the resultant changes by a constant).
@@ -57,7 +57,7 @@ AuxiliaryResultant curve_auxiliary_resultant(const std::array<Polynomial, 3>& in
   stats.matrix_size = pencil.size();
   stats.degree_bound = stats.total_degree;
   stats.construction_ms = ms_since(start);
-  PencilDeterminantOptions determinant;
+  PencilDeterminantParams determinant;
   determinant.degree_bound = stats.degree_bound;
   determinant.proven_bits = pencil.determinant_coefficient_bits();
   determinant.threads = options.threads;

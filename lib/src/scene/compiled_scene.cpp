@@ -65,7 +65,7 @@ std::string child_field(const std::string& path, NodeArity arity, std::size_t i)
 
 class SceneCompiler {
  public:
-  SceneCompiler(const SceneOptions& options, const Budget& budget) : options_(options), budget_(budget) {
+  SceneCompiler(const SceneParams& options, const Budget& budget) : options_(options), budget_(budget) {
     scene_.name_ = options.name;
     scene_.mode_ = options.mode;
   }
@@ -78,14 +78,14 @@ class SceneCompiler {
   void classify(const SceneNode& node, const std::string& path, Node& out);
   void bound(Node& out) const;
 
-  const SceneOptions& options_;
+  const SceneParams& options_;
   const Budget& budget_;
   CompiledScene scene_;
   std::set<std::string> node_names_;
   std::size_t visited_ = 0;
 };
 
-CompiledScene compile_scene(const SceneNode& root, const SceneOptions& options, const Budget& budget) {
+CompiledScene compile_scene(const SceneNode& root, const SceneParams& options, const Budget& budget) {
   return SceneCompiler(options, budget).run(root);
 }
 

@@ -85,7 +85,7 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
         throw at_field(e, field, "domain");
       }
     }
-    ImplicitizeOptions options;
+    ImplicitizeParams options;
     options.groebner.budget = budget;
     try {
       f = implicitize(parametrization, options).implicit;

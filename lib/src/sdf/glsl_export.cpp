@@ -13,7 +13,7 @@ SdfMode parse_sdf_mode(const std::string& text) {
   throw InputError("invalid_value", "unknown mode '" + text + "' (expected fast or safe)").in_field("mode");
 }
 
-std::string sdf_glsl(const Polynomial& f, const SdfOptions& options) {
+std::string sdf_glsl(const Polynomial& f, const SdfParams& options) {
   check_glsl_name(options.name);
   const std::string function = options.name + "_sdf";
   switch (options.mode) {

@@ -6,7 +6,7 @@
 namespace implicitizer {
 
 ImplicitizeAnswer answer_implicitize_request(const ImplicitizeRequest& request, BuchbergerParams params) {
-  ImplicitizeOptions options;
+  ImplicitizeParams options;
   try {
     options.method = parse_implicitization_method(request.method);
   } catch (const InputError& e) {

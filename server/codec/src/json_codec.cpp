@@ -24,7 +24,7 @@ using Writer = rapidjson::Writer<rapidjson::StringBuffer>;
 
 // ---- decoding -------------------------------------------------------------
 
-rapidjson::Document parse_object(std::string_view body, const JsonLimits& limits) {
+rapidjson::Document parse_object(std::string_view body, const JsonParams& limits) {
   check_json_depth(body, limits.max_depth);
   rapidjson::Document document;
   // Iterative parsing: no recursion whatever the input; invalid UTF-8 is a syntax
@@ -290,7 +290,7 @@ std::string finish(const rapidjson::StringBuffer& buffer) { return std::string(b
 
 }  // namespace
 
-ImplicitizeRequest decode_implicitize_request(std::string_view body, const JsonLimits& limits) {
+ImplicitizeRequest decode_implicitize_request(std::string_view body, const JsonParams& limits) {
   const rapidjson::Document document = parse_object(body, limits);
   ObjectReader reader(document);
   ImplicitizeRequest request;
@@ -308,7 +308,7 @@ ImplicitizeRequest decode_implicitize_request(std::string_view body, const JsonL
   return request;
 }
 
-GroebnerRequest decode_groebner_request(std::string_view body, const JsonLimits& limits) {
+GroebnerRequest decode_groebner_request(std::string_view body, const JsonParams& limits) {
   const rapidjson::Document document = parse_object(body, limits);
   ObjectReader reader(document);
   GroebnerRequest request;
@@ -323,7 +323,7 @@ GroebnerRequest decode_groebner_request(std::string_view body, const JsonLimits&
   return request;
 }
 
-ResultantRequest decode_resultant_request(std::string_view body, const JsonLimits& limits) {
+ResultantRequest decode_resultant_request(std::string_view body, const JsonParams& limits) {
   const rapidjson::Document document = parse_object(body, limits);
   ObjectReader reader(document);
   ResultantRequest request;
@@ -358,11 +358,11 @@ std::vector<std::string> read_box_texts(const rapidjson::Value& v) {
 
 }  // namespace
 
-SdfRequest decode_sdf_request(std::string_view body, const JsonLimits& limits) {
+SdfRequest decode_sdf_request(std::string_view body, const JsonParams& limits) {
   // A scene nests an object and a children array per level: allow the deepest
   // scene the scene decoder accepts (kMaxSceneJsonDepth, a few hundred bytes of
   // stack per level in RapidJSON's recursive destructor), whatever the caller's limit.
-  JsonLimits scene_limits = limits;
+  JsonParams scene_limits = limits;
   scene_limits.max_depth = std::max(limits.max_depth, kMaxSceneJsonDepth + 1);
   const rapidjson::Document document = parse_object(body, scene_limits);
   ObjectReader reader(document);
@@ -385,8 +385,8 @@ SdfRequest decode_sdf_request(std::string_view body, const JsonLimits& limits) {
   return request;
 }
 
-RenderRequest decode_render_request(std::string_view body, const JsonLimits& limits) {
-  JsonLimits scene_limits = limits;  // as decode_sdf_request: room for the deepest scene
+RenderRequest decode_render_request(std::string_view body, const JsonParams& limits) {
+  JsonParams scene_limits = limits;  // as decode_sdf_request: room for the deepest scene
   scene_limits.max_depth = std::max(limits.max_depth, kMaxSceneJsonDepth + 1);
   const rapidjson::Document document = parse_object(body, scene_limits);
   ObjectReader reader(document);

@@ -27,7 +27,7 @@ SceneNode scene_of(const RenderRequest& request, const Budget& budget) {
   node.kind = NodeKind::implicit;
   if (request.parametric) {
     const auto& [x, y, z] = *request.parametric;
-    ImplicitizeOptions options;
+    ImplicitizeParams options;
     options.groebner.budget = budget;
     node.leaf.equation =
         to_string(implicitize(parse_parametrization(x, y, z, request.parameters, budget), options).implicit);
@@ -52,7 +52,7 @@ InputError in_request_field(const InputError& e, const RenderRequest& request) {
 
 }  // namespace
 
-void check_render_size(const RenderRequest& request, const RenderLimits& limits) {
+void check_render_size(const RenderRequest& request, const RenderRequestParams& limits) {
   for (const auto& [field, value] : {std::pair{"width", request.width}, std::pair{"height", request.height}}) {
     if (value == 0 || value > limits.max_side) {
       throw InputError("invalid_size", std::string(field) + " must be 1 to " + std::to_string(limits.max_side))
@@ -72,7 +72,7 @@ void check_render_size(const RenderRequest& request, const RenderLimits& limits)
 }
 
 RenderAnswer answer_render_request(const RenderRequest& request, const Budget& caller_budget,
-                                   const RenderLimits& limits, std::size_t threads) {
+                                   const RenderRequestParams& limits, std::size_t threads) {
   Budget budget = caller_budget;
   if (request.timeout_seconds) budget.set_timeout(*request.timeout_seconds);
   check_render_size(request, limits);
@@ -92,13 +92,13 @@ RenderAnswer answer_render_request(const RenderRequest& request, const Budget& c
       request.precision == "double" ? EvaluationPrecision::double_run : EvaluationPrecision::single;
   RenderTarget target = [&] {
     try {
-      return RenderTarget::compile(root, SceneOptions{mode, box, request.name, "scene"}, precision, budget);
+      return RenderTarget::compile(root, SceneParams{mode, box, request.name, "scene"}, precision, budget);
     } catch (const InputError& e) {
       throw in_request_field(e, request);
     }
   }();
 
-  RenderSettings settings;
+  RenderParams settings;
   settings.width = request.width;
   settings.height = request.height;
   settings.antialiasing = request.antialiasing;

@@ -71,7 +71,7 @@ SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& caller_bud
   }
   if (request.scene) {
     make_scene_frame(box);  // validates a box no leaf may read
-    const CompiledScene scene = compile_scene(*request.scene, SceneOptions{mode, box, request.name, "scene"}, budget);
+    const CompiledScene scene = compile_scene(*request.scene, SceneParams{mode, box, request.name, "scene"}, budget);
     answer.glsl = scene.to_glsl();
     answer.nodes = scene.node_count();
     answer.uniforms = scene.uniforms();

@@ -18,7 +18,7 @@ std::string canonical_key(const GroebnerRequest& request) {
 HandlerResult handle_groebner(const Request& request, const HandlerContext& context) {
   GroebnerRequest decoded;
   try {
-    decoded = decode_groebner_request(request.body(), JsonLimits{context.config.json_max_depth});
+    decoded = decode_groebner_request(request.body(), JsonParams{context.config.json_max_depth});
   } catch (const InputError& e) {
     return make_json_response(http::status::bad_request, encode_error(e));
   }

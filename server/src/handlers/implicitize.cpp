@@ -22,7 +22,7 @@ std::string canonical_key(const ImplicitizeRequest& request) {
 HandlerResult handle_implicitize(const Request& request, const HandlerContext& context) {
   ImplicitizeRequest decoded;
   try {
-    decoded = decode_implicitize_request(request.body(), JsonLimits{context.config.json_max_depth});
+    decoded = decode_implicitize_request(request.body(), JsonParams{context.config.json_max_depth});
   } catch (const InputError& e) {
     return make_json_response(http::status::bad_request, encode_error(e));
   }

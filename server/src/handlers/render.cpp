@@ -35,7 +35,7 @@ Response make_png_response(const RenderAnswer& answer) {
 HandlerResult handle_render(const Request& request, const HandlerContext& context) {
   RenderRequest decoded;
   try {
-    decoded = decode_render_request(request.body(), JsonLimits{context.config.json_max_depth});
+    decoded = decode_render_request(request.body(), JsonParams{context.config.json_max_depth});
     check_render_size(decoded);
   } catch (const InputError& e) {
     const http::status status =
@@ -46,7 +46,7 @@ HandlerResult handle_render(const Request& request, const HandlerContext& contex
   computation.budget = make_computation_budget(decoded.timeout_seconds, context.config);
   decoded.timeout_seconds.reset();  // the budget's deadline already counts from now
   computation.run = [decoded = std::move(decoded), budget = computation.budget]() {
-    const RenderAnswer answer = answer_render_request(decoded, budget, RenderLimits{}, 1);
+    const RenderAnswer answer = answer_render_request(decoded, budget, RenderRequestParams{}, 1);
     if (decoded.format == "json") return make_json_response(http::status::ok, encode_render_response(answer, true));
     return make_png_response(answer);
   };

@@ -8,7 +8,7 @@
 namespace implicitizer::server {
 
 /// Decodes the body (decode_render_request) and checks its size at once: a bad body
-/// is 400, more than RenderLimits::max_rays rays 413 (`render_too_large`). The
+/// is 400, more than RenderRequestParams::max_rays rays 413 (`render_too_large`). The
 /// render runs on the worker pool under the request's budget, on that worker's
 /// thread alone (the pool, sized to the cores, is what spreads renders over them;
 /// a render that started its own threads would oversubscribe a busy server). The

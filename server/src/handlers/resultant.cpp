@@ -14,7 +14,7 @@ std::string canonical_key(const ResultantRequest& request) {
 HandlerResult handle_resultant(const Request& request, const HandlerContext& context) {
   ResultantRequest decoded;
   try {
-    decoded = decode_resultant_request(request.body(), JsonLimits{context.config.json_max_depth});
+    decoded = decode_resultant_request(request.body(), JsonParams{context.config.json_max_depth});
   } catch (const InputError& e) {
     return make_json_response(http::status::bad_request, encode_error(e));
   }

@@ -38,7 +38,7 @@ enum class ImplicitizationMethod {
 ImplicitizationMethod parse_implicitization_method(const std::string& name);
 
 /// Options of implicitize().
-struct ImplicitizeOptions {
+struct ImplicitizeParams {
   ImplicitizationMethod method = ImplicitizationMethod::automatic;
   BuchbergerParams groebner;  ///< includes the budget
   /// The Gröbner route computes the elimination modulo primes (eliminate_modular,
@@ -96,6 +96,6 @@ struct ImplicitizeResult {
 /// Throws NoSingleEquation when the ideal is zero or needs several generators (the
 /// image is a curve, a point, or fills space), LimitExceeded when the budget runs out.
 /// A failed verification throws std::logic_error: it is a bug, never an answer.
-ImplicitizeResult implicitize(const Parametrization& parametrization, const ImplicitizeOptions& options = {});
+ImplicitizeResult implicitize(const Parametrization& parametrization, const ImplicitizeParams& options = {});
 
 }  // namespace implicitizer

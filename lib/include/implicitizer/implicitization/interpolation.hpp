@@ -37,7 +37,7 @@
 namespace implicitizer {
 
 /// How implicitize_by_interpolation() works and when it stops.
-struct InterpolationOptions {
+struct InterpolationParams {
   /// Time, cancellation and the term limit (against the number of columns), checked
   /// at every evaluation row and between primes. One modular row reduction cannot be
   /// interrupted (FLINT's nmod_mat_rref): a deadline may be overrun by one of them,
@@ -139,7 +139,7 @@ std::int32_t implicit_degree_bound(const Parametrization& parametrization);
 /// (time, cancelled, or size: the matrix would exceed max_columns, or max_primes
 /// primes did not suffice), std::invalid_argument unless there are 2 or 3 coordinates.
 InterpolationResult implicitize_by_interpolation(const Parametrization& parametrization,
-                                                 const InterpolationOptions& options = {});
+                                                 const InterpolationParams& options = {});
 
 /// The same route limited to degrees ≤ `max_degree`: the equation when its degree
 /// is at most that (the answer of implicitize_by_interpolation()), nullopt when a
@@ -151,7 +151,7 @@ InterpolationResult implicitize_by_interpolation(const Parametrization& parametr
 /// throws as it does.
 std::optional<InterpolationResult> implicitize_by_interpolation_up_to(const Parametrization& parametrization,
                                                                       std::int32_t max_degree,
-                                                                      const InterpolationOptions& options = {});
+                                                                      const InterpolationParams& options = {});
 
 /// The two checks of the header for any candidate F, each independent of how F was
 /// found: the slow twin of the route's bookkeeping, for tests and for equations
@@ -168,6 +168,6 @@ struct ImplicitEquationCheck {
 /// Checks `candidate` (in implicit_ring(n)) against `parametrization`, with the
 /// points, budget and primes of `options` (the next prime of the sequence).
 ImplicitEquationCheck check_implicit_equation(const Polynomial& candidate, const Parametrization& parametrization,
-                                              const InterpolationOptions& options = {});
+                                              const InterpolationParams& options = {});
 
 }  // namespace implicitizer

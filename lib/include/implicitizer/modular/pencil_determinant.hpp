@@ -50,7 +50,7 @@ class MatrixPencil {
 };
 
 /// How pencil_determinant() works and when it stops.
-struct PencilDeterminantOptions {
+struct PencilDeterminantParams {
   /// A proven bound on the total degree of the answer in u; it fixes the grid.
   std::int32_t degree_bound = 0;
   /// When non-empty, the answer is det A(u) / det A(u)[minor, minor] (Macaulay's
@@ -87,12 +87,12 @@ struct PencilDeterminantStats {
   bool proven = false;             ///< whether the primes reached the proven bound
 };
 
-/// det A(u) (or the quotient, see PencilDeterminantOptions::divisor_minor) as a
+/// det A(u) (or the quotient, see PencilDeterminantParams::divisor_minor) as a
 /// polynomial in `ring`, whose variables are u_1..u_k in order. Throws
 /// std::invalid_argument when the ring or the options do not fit the pencil,
 /// std::logic_error when the answer exceeds degree_bound (the bound was wrong),
 /// LimitExceeded when the budget or max_primes runs out.
-Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, const PencilDeterminantOptions& options,
+Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, const PencilDeterminantParams& options,
                               PencilDeterminantStats* stats = nullptr);
 
 /// The outcome of a probe at random points.

@@ -30,7 +30,7 @@ struct Expression {
 };
 
 /// Limits of the parser; defaults are the contract's.
-struct ParseLimits {
+struct ParseParams {
   unsigned max_exponent = 1000;      ///< largest exponent literal
   std::size_t max_depth = 256;       ///< deepest nesting of parentheses and operators
   std::size_t max_identifier = 32;   ///< longest identifier
@@ -41,7 +41,7 @@ struct ParseLimits {
 /// `empty_input`, `unexpected_character`, `unexpected_token`, `unexpected_end`,
 /// `missing_parenthesis`, `identifier_too_long`, `exponent_not_integer`,
 /// `exponent_too_large`, `chained_exponent`, `nesting_too_deep`, `input_too_long`.
-std::unique_ptr<Expression> parse_expression(std::string_view text, const ParseLimits& limits = {});
+std::unique_ptr<Expression> parse_expression(std::string_view text, const ParseParams& limits = {});
 
 /// The identifiers of `e` in order of first appearance.
 std::vector<std::string> collect_identifiers(const Expression& e);
@@ -52,6 +52,6 @@ std::vector<std::string> collect_identifiers(const std::vector<std::unique_ptr<E
 
 /// Whether `name` is an identifier of the contract's syntax: [A-Za-z_][A-Za-z0-9_]*
 /// (ASCII, whatever the C locale) of at most `max_length` characters.
-bool is_identifier(std::string_view name, std::size_t max_length = ParseLimits().max_identifier);
+bool is_identifier(std::string_view name, std::size_t max_length = ParseParams().max_identifier);
 
 }  // namespace implicitizer

@@ -24,6 +24,6 @@ RationalFunction evaluate_rational_function(const Expression& e, const RingPtr& 
 
 /// parse_expression then evaluate_polynomial.
 Polynomial parse_polynomial(std::string_view text, const RingPtr& ring, const Budget& budget = Budget(),
-                            const ParseLimits& limits = {});
+                            const ParseParams& limits = {});
 
 }  // namespace implicitizer

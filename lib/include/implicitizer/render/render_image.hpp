@@ -21,7 +21,7 @@
 namespace implicitizer {
 
 /// What and how to render.
-struct RenderSettings {
+struct RenderParams {
   std::size_t width = 256;         ///< pixels
   std::size_t height = 256;        ///< pixels
   std::uint32_t antialiasing = 2;  ///< AA: AA×AA samples per pixel, at (i + 0.5)/AA (the seed recommends 2)
@@ -74,6 +74,6 @@ struct RenderResult {
 /// "method": exact on a scene that is not one polynomial leaf); LimitExceeded when
 /// `budget` runs out (checked before each tile and inside exact root isolation),
 /// its message saying how many tiles were done.
-RenderResult render_image(const RenderTarget& target, const RenderSettings& settings, const Budget& budget = Budget());
+RenderResult render_image(const RenderTarget& target, const RenderParams& settings, const Budget& budget = Budget());
 
 }  // namespace implicitizer

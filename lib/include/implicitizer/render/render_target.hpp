@@ -58,7 +58,7 @@ class RenderTarget {
  public:
   /// Compiles `root` with `options` (compile_scene) and keeps the algebraic surface
   /// when the root is a polynomial leaf. Throws what compile_scene() throws.
-  static RenderTarget compile(const SceneNode& root, const SceneOptions& options,
+  static RenderTarget compile(const SceneNode& root, const SceneParams& options,
                               EvaluationPrecision precision = EvaluationPrecision::single,
                               const Budget& budget = Budget());
 

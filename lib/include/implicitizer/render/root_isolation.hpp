@@ -85,7 +85,7 @@ const char* to_string(RootPath path);
 const char* to_string(FallbackReason reason);
 
 /// Tolerance and limits.
-struct RootIsolationOptions {
+struct RootIsolationParams {
   /// The answer t is within relative_tolerance·max(scale, t*) of the first root t*.
   /// Must be in [1e-15, 1e-1] (below, double's own rounding of t dominates).
   double relative_tolerance = 1e-12;
@@ -139,7 +139,7 @@ struct SegmentRootSearch {
 /// allocates once its thread's buffers have grown to the degree. Preconditions:
 /// q is the segment's, 0 ≤ t_begin ≤ t_end finite, options valid.
 SegmentRootSearch isolate_first_root_bernstein(const RayPolynomialContext& context, const RaySegment& segment,
-                                               const DoubleRayPolynomial& q, const RootIsolationOptions& options);
+                                               const DoubleRayPolynomial& q, const RootIsolationParams& options);
 
 /// The exact path on q of the segment [t_begin, t_end] (from expand_exact: integer
 /// coefficients, index k for s^k; empty for q ≡ 0, whose first root is t_begin):
@@ -147,7 +147,7 @@ SegmentRootSearch isolate_first_root_bernstein(const RayPolynomialContext& conte
 /// square-free part has the same roots, all simple) and reported once. Checks
 /// `budget` at every node and bisection (LimitExceeded when it runs out).
 SegmentRootSearch isolate_first_root_descartes(const std::vector<Integer>& q, double t_begin, double t_end,
-                                               const RootIsolationOptions& options, const Budget& budget = Budget());
+                                               const RootIsolationParams& options, const Budget& budget = Budget());
 
 /// The first t in [t_min, t_max] with F(o + t·d) = 0, F the context's polynomial and
 /// o, d, t exactly the doubles given; std::nullopt when the ray misses. A ray lying
@@ -160,14 +160,14 @@ SegmentRootSearch isolate_first_root_descartes(const std::vector<Integer>& q, do
 /// bounded by max_subdivisions).
 std::optional<RayRoot> first_ray_root(const RayPolynomialContext& context, const std::array<double, 3>& origin,
                                       const std::array<double, 3>& direction, double t_min, double t_max,
-                                      const RootIsolationOptions& options = RootIsolationOptions(),
+                                      const RootIsolationParams& options = RootIsolationParams(),
                                       RootIsolationStats* stats = nullptr, const Budget& budget = Budget());
 
 /// The same for a polynomial `f` (builds its context: for one ray; a render builds
 /// the context once). Also throws the context's InputErrors.
 std::optional<RayRoot> first_ray_root(const Polynomial& f, const std::array<double, 3>& origin,
                                       const std::array<double, 3>& direction, double t_min, double t_max,
-                                      const RootIsolationOptions& options = RootIsolationOptions(),
+                                      const RootIsolationParams& options = RootIsolationParams(),
                                       RootIsolationStats* stats = nullptr, const Budget& budget = Budget());
 
 }  // namespace implicitizer

@@ -35,11 +35,11 @@ enum class AuxiliaryFormulation {
 const char* to_string(AuxiliaryFormulation formulation);
 
 /// Options of auxiliary_resultant().
-struct AuxiliaryResultantOptions {
+struct AuxiliaryResultantParams {
   Budget budget;         ///< time, size, cancellation
   unsigned threads = 0;  ///< threads for independent primes (0: every core)
   /// Macaulay's quotient stops when this many further primes change nothing
-  /// (PencilDeterminantOptions::stable_primes); callers that find the answer
+  /// (PencilDeterminantParams::stable_primes); callers that find the answer
   /// wrong by verification retry with more.
   std::size_t stable_primes = 1;
 };
@@ -87,11 +87,11 @@ struct AuxiliaryResultantPlan {
 /// Builds both formulations for `wxyz` (as auxiliary_resultant() does), probes them
 /// and keeps the one to compute.
 AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>& wxyz,
-                                                const AuxiliaryResultantOptions& options = {});
+                                                const AuxiliaryResultantParams& options = {});
 
 /// Computes the determinant `plan` chose, in `space`; zero when it chose none.
 AuxiliaryResultant compute_auxiliary_resultant(const AuxiliaryResultantPlan& plan, const RingPtr& space,
-                                               const AuxiliaryResultantOptions& options = {});
+                                               const AuxiliaryResultantParams& options = {});
 
 /// Computes Res_aux for `wxyz` = (ω, ξ, η, ζ), polynomials in a ring of exactly two
 /// parameters (s, t) with rational coefficients, in the ring `space` (x, y, z).
@@ -108,6 +108,6 @@ AuxiliaryResultant compute_auxiliary_resultant(const AuxiliaryResultantPlan& pla
 /// When both vanish (base points, or an image that is not a surface) the result
 /// is zero. Throws LimitExceeded from the budget.
 AuxiliaryResultant auxiliary_resultant(const std::array<Polynomial, 4>& wxyz, const RingPtr& space,
-                                       const AuxiliaryResultantOptions& options = {});
+                                       const AuxiliaryResultantParams& options = {});
 
 }  // namespace implicitizer

@@ -27,6 +27,6 @@ MatrixPencil curve_sylvester_pencil(const std::array<Polynomial, 3>& wxy);
 /// root or the image is a point (the caller reports it). The determinant is
 /// computed with primes up to its proven coefficient bound: exact by construction.
 AuxiliaryResultant curve_auxiliary_resultant(const std::array<Polynomial, 3>& wxy, const RingPtr& plane,
-                                             const AuxiliaryResultantOptions& options = {});
+                                             const AuxiliaryResultantParams& options = {});
 
 }  // namespace implicitizer

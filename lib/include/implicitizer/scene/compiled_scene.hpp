@@ -39,7 +39,7 @@
 namespace implicitizer {
 
 /// Options of compile_scene().
-struct SceneOptions {
+struct SceneParams {
   SdfMode mode = SdfMode::fast;
   /// The frame box of implicit and parametric leaves that give none (a parametric
   /// leaf with a domain uses the box of its patch instead).
@@ -158,6 +158,6 @@ class CompiledScene {
 /// the errors of the leaves (parse errors, `constant_polynomial`, `invalid_box`,
 /// `invalid_domain`, `unbounded_patch`, NoSingleEquation); LimitExceeded when
 /// `budget` runs out.
-CompiledScene compile_scene(const SceneNode& root, const SceneOptions& options, const Budget& budget = Budget());
+CompiledScene compile_scene(const SceneNode& root, const SceneParams& options, const Budget& budget = Budget());
 
 }  // namespace implicitizer

@@ -162,7 +162,7 @@ struct PolynomialLeafSource {
   /// parametric: one closed interval per parameter, in parameter order; empty: the
   /// whole surface (untrimmed). With a domain the leaf is the trimmed sheet.
   std::vector<std::pair<Rational, Rational>> domain;
-  std::optional<SceneBox> box;  ///< the frame box (default: SceneOptions::box)
+  std::optional<SceneBox> box;  ///< the frame box (default: SceneParams::box)
 };
 
 /// One node of a scene tree.

@@ -22,7 +22,7 @@ enum class SdfMode {
 SdfMode parse_sdf_mode(const std::string& text);
 
 /// Options of sdf_glsl().
-struct SdfOptions {
+struct SdfParams {
   SdfMode mode = SdfMode::fast;
   SceneBox box = SceneBox::default_box();  ///< the scene box the frame is built from
   std::string name = "surface";            ///< the function is NAME_sdf
@@ -32,6 +32,6 @@ struct SdfOptions {
 /// with exactly the variables x, y, z). Throws InputError: `invalid_name` (field
 /// "name", see check_glsl_name), `invalid_box` (field "box"),
 /// `constant_polynomial`, `degree_too_high` (mode safe: see SafeSdf::build).
-std::string sdf_glsl(const Polynomial& f, const SdfOptions& options);
+std::string sdf_glsl(const Polynomial& f, const SdfParams& options);
 
 }  // namespace implicitizer

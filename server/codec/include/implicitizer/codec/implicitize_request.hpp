@@ -25,7 +25,7 @@ struct ImplicitizeRequest {
   std::optional<std::vector<std::string>> parameters;
   /// `auto`, `groebner`, `resultant` or `interpolation`.
   std::string method = "auto";
-  /// The Gröbner route modulo primes (ImplicitizeOptions::modular_groebner).
+  /// The Gröbner route modulo primes (ImplicitizeParams::modular_groebner).
   bool modular = false;
   /// Wall-time limit in seconds; absent or <= 0 means none (the caller may impose its own).
   std::optional<double> timeout_seconds;

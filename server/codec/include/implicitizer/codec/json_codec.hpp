@@ -8,7 +8,7 @@
 /// refused (`unknown_field`) rather than ignored, so that a misspelt optional field
 /// (`"timeout"` for `"timeout_ms"`) cannot silently fall back to a default, and a
 /// field given twice is refused (`duplicate_field`). Nesting deeper than
-/// JsonLimits::max_depth is refused before parsing, so no input can exhaust the stack.
+/// JsonParams::max_depth is refused before parsing, so no input can exhaust the stack.
 ///
 /// Encoding writes compact JSON (no spaces, no trailing newline) with keys in the
 /// order the contract lists them; times in milliseconds with at most 3 decimals.
@@ -27,7 +27,7 @@
 namespace implicitizer {
 
 /// Limits of the decoders.
-struct JsonLimits {
+struct JsonParams {
   std::size_t max_depth = 32;  ///< deepest nesting of arrays and objects
 };
 
@@ -36,18 +36,18 @@ struct JsonLimits {
 /// offset of the syntax error), `json_too_deep`, `wrong_type`, `missing_field`,
 /// `unknown_field`, `duplicate_field`, `invalid_value` (a negative or non-finite
 /// timeout); the error's field names the offending member ("parameters[1]").
-ImplicitizeRequest decode_implicitize_request(std::string_view body, const JsonLimits& limits = {});
+ImplicitizeRequest decode_implicitize_request(std::string_view body, const JsonParams& limits = {});
 
 /// Reads a `POST /v1/groebner` body: `{"polynomials": [P..], "variables": [..]?,
 /// "order": O?, "weights": [N..]?, "eliminate": [..]?, "timeout_ms": T?}`
 /// (`weights` and `timeout_ms` extend the contract). Throws InputError as
 /// decode_implicitize_request().
-GroebnerRequest decode_groebner_request(std::string_view body, const JsonLimits& limits = {});
+GroebnerRequest decode_groebner_request(std::string_view body, const JsonParams& limits = {});
 
 /// Reads a `POST /v1/resultant` body: `{"polynomials": [F, G], "variable": V,
 /// "timeout_ms": T?}`. Throws InputError as decode_implicitize_request(), and
 /// `wrong_number_of_polynomials` (field "polynomials") unless there are exactly two.
-ResultantRequest decode_resultant_request(std::string_view body, const JsonLimits& limits = {});
+ResultantRequest decode_resultant_request(std::string_view body, const JsonParams& limits = {});
 
 /// Reads a `POST /v1/sdf` body: `{"implicit": F | "scene": SCENE, "mode": "fast"?,
 /// "box": [x0, y0, z0, x1, y1, z1]?, "name": N?, "timeout_ms": T?}`. Box numbers are
@@ -56,7 +56,7 @@ ResultantRequest decode_resultant_request(std::string_view body, const JsonLimit
 /// whatever `limits` says). Throws InputError as decode_implicitize_request(), the
 /// errors of decode_scene() (fields "scene.children[1]…"), and `invalid_value`
 /// (field "scene") when both implicit and scene are given.
-SdfRequest decode_sdf_request(std::string_view body, const JsonLimits& limits = {});
+SdfRequest decode_sdf_request(std::string_view body, const JsonParams& limits = {});
 
 /// Reads a `POST /v1/render` body: the surface as for /v1/sdf (`"implicit": F` or
 /// `"scene": SCENE`) or parametric (`"x", "y", "z": E`, `"parameters": [..]?`), and
@@ -65,7 +65,7 @@ SdfRequest decode_sdf_request(std::string_view body, const JsonLimits& limits = 
 /// Throws InputError as decode_sdf_request(), `wrong_type` (sizes must be positive
 /// integers, eye and target three numbers), `missing_field` ("x": some of x, y, z
 /// but not all) and `invalid_value` ("scene": more than one surface).
-RenderRequest decode_render_request(std::string_view body, const JsonLimits& limits = {});
+RenderRequest decode_render_request(std::string_view body, const JsonParams& limits = {});
 
 /// `{"width", "height", "method", "mode", "precision", "rays", "mean_evaluations",
 /// "max_evaluations", "out_of_steps", "hits", "shading_evaluations", "threads",

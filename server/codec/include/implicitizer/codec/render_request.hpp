@@ -43,7 +43,7 @@ struct RenderRequest {
 };
 
 /// The sizes a request may ask for.
-struct RenderLimits {
+struct RenderRequestParams {
   std::size_t max_side = 4096;                      ///< width and height at most this
   std::uint64_t max_rays = std::uint64_t{4} << 20;  ///< width·height·AA² at most this (1024²·2²)
 };
@@ -59,7 +59,7 @@ struct RenderAnswer {
 /// Throws InputError `invalid_size` (field "width"/"height": 0 or above max_side),
 /// `invalid_value` (field "aa": 0 or above 8), `render_too_large` (field "width":
 /// more than max_rays primary rays; HTTP 413).
-void check_render_size(const RenderRequest& request, const RenderLimits& limits = {});
+void check_render_size(const RenderRequest& request, const RenderRequestParams& limits = {});
 
 /// Answers `request` under `budget` (whose deadline the request's timeout, when
 /// present, replaces), with `threads` render threads (0: one per core). Throws
@@ -71,6 +71,6 @@ void check_render_size(const RenderRequest& request, const RenderLimits& limits 
 /// scene that is not one polynomial leaf), the errors of compile_scene();
 /// NoSingleEquation for a parametric surface that is not a surface; LimitExceeded.
 RenderAnswer answer_render_request(const RenderRequest& request, const Budget& budget = Budget(),
-                                   const RenderLimits& limits = {}, std::size_t threads = 0);
+                                   const RenderRequestParams& limits = {}, std::size_t threads = 0);
 
 }  // namespace implicitizer
