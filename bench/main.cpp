@@ -230,7 +230,7 @@ OurRun time_implicitize(const Parametrization& p, ImplicitizationMethod method, 
     ImplicitizeParams options;
     options.method = method;
     options.modular_groebner = config.modular;
-    options.groebner.budget = Budget::with_timeout(config.budget_seconds);
+    options.budget = Budget::with_timeout(config.budget_seconds);
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = process_cpu_ms();
     try {

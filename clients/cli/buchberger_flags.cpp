@@ -6,28 +6,28 @@ BuchbergerParams buchberger_params_from(const Arguments& arguments) {
   BuchbergerParams params;
   if (const auto strategy = arguments.value("strategy")) {
     if (*strategy == "auto") {
-      params.strategy = SelectionStrategy::automatic;
+      params.variant.strategy = SelectionStrategy::automatic;
     } else if (*strategy == "normal") {
-      params.strategy = SelectionStrategy::normal;
+      params.variant.strategy = SelectionStrategy::normal;
     } else if (*strategy == "sugar") {
-      params.strategy = SelectionStrategy::sugar;
+      params.variant.strategy = SelectionStrategy::sugar;
     } else {
       throw UsageError("--strategy must be auto, normal or sugar, not '" + *strategy + "'");
     }
   }
   if (const auto criteria = arguments.value("criteria")) {
     if (*criteria == "gm") {
-      params.product_criterion = true;
-      params.chain_criterion = ChainCriterion::gebauer_moller;
+      params.variant.product_criterion = true;
+      params.variant.chain_criterion = ChainCriterion::gebauer_moller;
     } else if (*criteria == "seed") {
-      params.product_criterion = true;
-      params.chain_criterion = ChainCriterion::buchberger;
+      params.variant.product_criterion = true;
+      params.variant.chain_criterion = ChainCriterion::buchberger;
     } else if (*criteria == "product") {
-      params.product_criterion = true;
-      params.chain_criterion = ChainCriterion::off;
+      params.variant.product_criterion = true;
+      params.variant.chain_criterion = ChainCriterion::off;
     } else if (*criteria == "none") {
-      params.product_criterion = false;
-      params.chain_criterion = ChainCriterion::off;
+      params.variant.product_criterion = false;
+      params.variant.chain_criterion = ChainCriterion::off;
     } else {
       throw UsageError("--criteria must be gm, seed, product or none, not '" + *criteria + "'");
     }

@@ -218,7 +218,7 @@ std::vector<SugarRegression> sugar_regressions() {
 }
 
 bool is_sugar_without_chain_criterion(const BuchbergerParams& params) {
-  return params.strategy == SelectionStrategy::sugar && params.chain_criterion == ChainCriterion::off;
+  return params.variant.strategy == SelectionStrategy::sugar && params.variant.chain_criterion == ChainCriterion::off;
 }
 
 // Every setting but sugar without a chain criterion finishes at once, and they agree.
@@ -369,8 +369,8 @@ TEST_P(BuchbergerPropertyTest, EverySettingGivesTheSameReducedBasis) {
 TEST_P(BuchbergerPropertyTest, CriteriaSaveReductions) {
   const RingPtr ring = Ring::make({"x", "y", "z"}, GetParam().order);
   BuchbergerParams none;
-  none.chain_criterion = ChainCriterion::off;
-  none.product_criterion = false;
+  none.variant.chain_criterion = ChainCriterion::off;
+  none.variant.product_criterion = false;
   const BuchbergerParams all;
   std::size_t with_none = 0, with_all = 0, removed = 0;
   for (const auto& generators : random_ideals(ring)) {

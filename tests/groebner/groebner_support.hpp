@@ -184,15 +184,15 @@ inline std::vector<BuchbergerParams> all_settings() {
     for (ChainCriterion chain : {ChainCriterion::off, ChainCriterion::gebauer_moller, ChainCriterion::buchberger}) {
       for (bool product : {true, false}) {
         BuchbergerParams p;
-        p.strategy = strategy;
-        p.chain_criterion = chain;
-        p.product_criterion = product;
+        p.variant.strategy = strategy;
+        p.variant.chain_criterion = chain;
+        p.variant.product_criterion = product;
         out.push_back(p);
       }
     }
   }
   BuchbergerParams no_tail;
-  no_tail.tail_reduce = false;
+  no_tail.variant.tail_reduce = false;
   out.push_back(no_tail);
   return out;
 }
@@ -200,7 +200,7 @@ inline std::vector<BuchbergerParams> all_settings() {
 /// A readable description of a setting, for SCOPED_TRACE.
 inline std::string describe(const BuchbergerParams& p) {
   std::string s;
-  switch (p.strategy) {
+  switch (p.variant.strategy) {
     case SelectionStrategy::automatic:
       s = "automatic";
       break;
@@ -211,7 +211,7 @@ inline std::string describe(const BuchbergerParams& p) {
       s = "sugar";
       break;
   }
-  switch (p.chain_criterion) {
+  switch (p.variant.chain_criterion) {
     case ChainCriterion::off:
       s += "/chain=off";
       break;
@@ -222,8 +222,8 @@ inline std::string describe(const BuchbergerParams& p) {
       s += "/chain=buchberger";
       break;
   }
-  s += p.product_criterion ? "/product=on" : "/product=off";
-  s += p.tail_reduce ? "/tail=on" : "/tail=off";
+  s += p.variant.product_criterion ? "/product=on" : "/product=off";
+  s += p.variant.tail_reduce ? "/tail=on" : "/tail=off";
   return s;
 }
 
@@ -267,10 +267,10 @@ inline void expect_coherent_stats(const GroebnerResult& r, const BuchbergerParam
   EXPECT_LE(s.zero_reductions, s.reductions);
   EXPECT_GE(s.pairs_created, s.product_criterion + s.chain_criterion + s.reductions);
   EXPECT_GE(s.elapsed_ms, 0.0);
-  if (!params.product_criterion) {
+  if (!params.variant.product_criterion) {
     EXPECT_EQ(s.product_criterion, 0u);
   }
-  if (params.chain_criterion == ChainCriterion::off) {
+  if (params.variant.chain_criterion == ChainCriterion::off) {
     EXPECT_EQ(s.chain_criterion, 0u);
   }
   if (s.reductions > 0) {

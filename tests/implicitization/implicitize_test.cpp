@@ -84,7 +84,7 @@ TEST(Implicitize, ModularGroebnerRouteAgreesWithSingular) {
   options.modular_groebner = true;
   for (const auto& s : surfaces) {
     SCOPED_TRACE(s.name);
-    options.groebner.budget.set_timeout(60);  // each surface its own minute (about a second unloaded)
+    options.budget.set_timeout(60);  // each surface its own minute (about a second unloaded)
     const ImplicitizeResult r = implicitize(parse_parametrization(s.x, s.y, s.z), options);
     ASSERT_TRUE(r.modular_stats);
     EXPECT_TRUE(r.verified);
@@ -136,7 +136,7 @@ TEST(Implicitize, BudgetExpires) {
     if (s.name != "tp_22" && s.name != "tp_33") continue;
     ImplicitizeParams options;
     options.method = s.name == "tp_22" ? ImplicitizationMethod::groebner : ImplicitizationMethod::resultant;
-    options.groebner.budget.set_timeout(s.name == "tp_22" ? 0.05 : 0.002);
+    options.budget.set_timeout(s.name == "tp_22" ? 0.05 : 0.002);
     try {
       implicitize(parse_parametrization(s.x, s.y, s.z), options);
       FAIL() << s.name << " finished within its deadline";
@@ -404,7 +404,7 @@ TEST(Implicitize, ResultantMatricesHaveASizeLimit) {
     EXPECT_NE(std::string(e.what()).find("rows"), std::string::npos);
   }
   ImplicitizeParams options;
-  options.groebner.budget.set_timeout(0.2);
+  options.budget.set_timeout(0.2);
   try {
     const ImplicitizeResult r = implicitize(parse_parametrization(x, y, z), options);
     EXPECT_EQ(r.method, "groebner");

@@ -117,7 +117,7 @@ TEST_P(BuchbergerOracle, ReducedBasesMatchSingular) {
     } catch (const LimitExceeded& e) {
       ADD_FAILURE() << "compute_groebner_basis with default parameters: " << e.what()
                     << " (Singular: milliseconds); checking with the normal strategy instead";
-      params.strategy = SelectionStrategy::normal;
+      params.variant.strategy = SelectionStrategy::normal;
       params.budget.set_timeout(10);
       ours = compute_groebner_basis(input, params).basis;
     }

@@ -97,7 +97,7 @@ TEST_P(ImplicitizeOracle, EquationMatchesSingularAndExpected) {
   SCOPED_TRACE(s.name + ": x = " + s.x + ", y = " + s.y + ", z = " + s.z);
   const Parametrization parametrization = parse_parametrization(s.x, s.y, s.z);
   ImplicitizeParams options;
-  options.groebner.budget.set_timeout(30);
+  options.budget.set_timeout(30);
   const ImplicitizeResult ours = implicitize(parametrization, options);
   EXPECT_TRUE(ours.verified);
   EXPECT_EQ(ours.degree, s.degree);

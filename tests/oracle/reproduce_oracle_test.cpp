@@ -62,7 +62,7 @@ class ReproduceOracle : public ::testing::TestWithParam<testing::Surface> {
   Answer implicitize_surface() const {
     const testing::Surface& s = GetParam();
     ImplicitizeParams options;
-    options.groebner.budget.set_timeout(30);
+    options.budget.set_timeout(30);
     const Parametrization p = s.z.empty() ? parse_parametrization(std::vector<std::string>{s.x, s.y})
                                           : parse_parametrization(s.x, s.y, s.z);
     const ImplicitizeResult result = implicitize(p, options);

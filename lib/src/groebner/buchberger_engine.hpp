@@ -72,7 +72,7 @@ class BuchbergerEngine {
         stats_.work += counters.work;
         return false;
       }
-      if (!h.empty() && params_.tail_reduce) {
+      if (!h.empty() && params_.variant.tail_reduce) {
         h = arithmetic_.reduce(std::move(h), reducers_, true, params_.budget, counters, &sugar);
       }
       stats_.reduction_steps += counters.steps;

@@ -44,7 +44,7 @@ void SPairQueue::examined(std::size_t& steps) const {
 }
 
 void SPairQueue::add_element(std::vector<BasisEntry>& basis, std::size_t t) {
-  if (params_.chain_criterion == ChainCriterion::gebauer_moller) {
+  if (params_.variant.chain_criterion == ChainCriterion::gebauer_moller) {
     update_gebauer_moller(basis, t);
     return;
   }
@@ -54,7 +54,7 @@ void SPairQueue::add_element(std::vector<BasisEntry>& basis, std::size_t t) {
   for (std::size_t i = 0; i < t; ++i) {
     examined(steps);
     SPair p = make_pair(basis, i, t);
-    if (params_.product_criterion && ring_.coprime(basis[i].lead(), basis[t].lead())) {
+    if (params_.variant.product_criterion && ring_.coprime(basis[i].lead(), basis[t].lead())) {
       ++stats_.product_criterion;
       continue;
     }
@@ -77,7 +77,7 @@ void SPairQueue::update_gebauer_moller(std::vector<BasisEntry>& basis, std::size
   }
   const auto coprime = [&](const SPair& p) {
     const std::size_t other = p.i == t ? p.j : p.i;
-    return params_.product_criterion && ring_.coprime(basis[other].lead(), basis[t].lead());
+    return params_.variant.product_criterion && ring_.coprime(basis[other].lead(), basis[t].lead());
   };
   // M and F: walk the new pairs; keep (i,t) if it is coprime (it then stands for its
   // lcm class) or no other remaining new pair has an lcm dividing its lcm.
@@ -159,7 +159,7 @@ bool SPairQueue::pop(const std::vector<BasisEntry>& basis, SPair& out) {
     if (!p.alive) continue;
     --alive_;
     pending_.erase(key(p.i, p.j));
-    if (params_.chain_criterion == ChainCriterion::buchberger && buchberger_chain_applies(basis, p)) {
+    if (params_.variant.chain_criterion == ChainCriterion::buchberger && buchberger_chain_applies(basis, p)) {
       ++stats_.chain_criterion;
       continue;
     }

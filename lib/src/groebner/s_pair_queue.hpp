@@ -38,8 +38,8 @@ class SPairQueue {
       : ring_(ring),
         params_(params),
         stats_(stats),
-        use_sugar_(params.strategy == SelectionStrategy::sugar ||
-                   (params.strategy == SelectionStrategy::automatic && ring.is_elimination_order())) {}
+        use_sugar_(params.variant.strategy == SelectionStrategy::sugar ||
+                   (params.variant.strategy == SelectionStrategy::automatic && ring.is_elimination_order())) {}
 
   // Called after basis[t] was appended: forms the pairs (i, t), applies the
   // criteria of the chosen update, and marks elements made redundant.

@@ -95,7 +95,8 @@ ImplicitizationIdeal implicitization_ideal(const Parametrization& p) {
 ImplicitizeResult by_groebner(const Parametrization& p, const ImplicitizeParams& options) {
   const ImplicitizationIdeal ideal = implicitization_ideal(p);
   const std::size_t n = p.coordinates.size();
-  const EliminationResult elimination = eliminate(ideal.generators, ideal.eliminated, options.groebner);
+  const BuchbergerParams buchberger{options.buchberger, options.budget};
+  const EliminationResult elimination = eliminate(ideal.generators, ideal.eliminated, buchberger);
   const auto& gens = elimination.elimination;
   if (gens.size() != 1 || gens.front().is_constant()) {
     std::vector<std::string> printed;
@@ -152,7 +153,7 @@ std::optional<ImplicitizeResult> by_modular_groebner(const Parametrization& p, c
   const ImplicitizationIdeal ideal = implicitization_ideal(p);
   const std::size_t n = p.coordinates.size();
   ModularGroebnerParams params;
-  params.buchberger = options.groebner;
+  params.buchberger = {options.buchberger, options.budget};
   params.prove = false;
   params.lift_only_free_of_first = ideal.eliminated.size();
   ModularGroebnerStats stats;
@@ -164,7 +165,7 @@ std::optional<ImplicitizeResult> by_modular_groebner(const Parametrization& p, c
   result.implicit = elimination.elimination.front().map_to(implicit_ring(n), std::span(identity, n)).primitive_part();
   const auto verify_start = Clock::now();
   InterpolationParams check;
-  check.budget = options.groebner.budget;
+  check.budget = options.budget;
   const ImplicitEquationCheck proof = check_implicit_equation(result.implicit, p, check);
   result.verify_ms = std::chrono::duration<double, std::milli>(Clock::now() - verify_start).count();
   if (!proof.vanishes || !proof.minimal) return std::nullopt;
@@ -262,9 +263,9 @@ std::optional<ImplicitizeResult> by_resultant(const Parametrization& p, const Bu
 std::optional<ImplicitizeResult> groebner_within(const Parametrization& p, const ImplicitizeParams& options,
                                                  std::uint64_t work) {
   try {
-    return try_within(options.groebner.budget, work, [&](const Budget& trial) {
+    return try_within(options.budget, work, [&](const Budget& trial) {
       ImplicitizeParams limited = options;
-      limited.groebner.budget = trial;
+      limited.budget = trial;
       return by_groebner(p, limited);
     });
   } catch (const LimitExceeded& e) {
@@ -305,7 +306,7 @@ constexpr double kBaseHeadStartMs = 0.5;
 
 ImplicitizeResult implicitize(const Parametrization& p, const ImplicitizeParams& options) {
   const auto start = Clock::now();
-  const Budget& budget = options.groebner.budget;
+  const Budget& budget = options.budget;
   // The resultant route eliminates one parameter per coordinate but one: a surface
   // in two parameters, or a plane curve in one.
   const std::size_t coordinates = p.coordinates.size();

@@ -86,7 +86,7 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
       }
     }
     ImplicitizeParams options;
-    options.groebner.budget = budget;
+    options.budget = budget;
     try {
       f = implicitize(parametrization, options).implicit;
     } catch (const NoSingleEquation& e) {

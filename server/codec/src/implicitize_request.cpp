@@ -17,7 +17,8 @@ ImplicitizeAnswer answer_implicitize_request(const ImplicitizeRequest& request, 
   std::vector<std::string> coordinates = {request.x, request.y};
   if (request.z) coordinates.push_back(*request.z);
   const Parametrization parametrization = parse_parametrization(coordinates, request.parameters, params.budget);
-  options.groebner = std::move(params);
+  options.budget = std::move(params.budget);
+  options.buchberger = params.variant;
   options.modular_groebner = request.modular;
   ImplicitizeResult result = implicitize(parametrization, options);
   return {std::move(result), reproduce_scripts(parametrization)};

@@ -28,7 +28,7 @@ SceneNode scene_of(const RenderRequest& request, const Budget& budget) {
   if (request.parametric) {
     const auto& [x, y, z] = *request.parametric;
     ImplicitizeParams options;
-    options.groebner.budget = budget;
+    options.budget = budget;
     node.leaf.equation =
         to_string(implicitize(parse_parametrization(x, y, z, request.parameters, budget), options).implicit);
     return node;

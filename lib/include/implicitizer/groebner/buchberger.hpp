@@ -30,8 +30,9 @@ enum class ChainCriterion {
                    ///< that both other pairs were already treated
 };
 
-/// Parameters of compute_groebner_basis().
-struct BuchbergerParams {
+/// Which Buchberger runs: the pair selection, the criteria, the tail reduction.
+/// Every variant computes the same reduced basis; they differ in work only.
+struct BuchbergerVariant {
   /// automatic by default. Elimination orders need sugar (with the normal strategy
   /// the lcm order picks pairs by their x,y,z part first); on other orders the normal
   /// strategy is Buchberger's classic choice and, on the oracle tests' random ideals,
@@ -42,7 +43,12 @@ struct BuchbergerParams {
   ChainCriterion chain_criterion = ChainCriterion::gebauer_moller;
   /// Fully reduce (not only the leading term) every new basis element.
   bool tail_reduce = true;
-  /// Time, size (terms of any intermediate polynomial) and cancellation.
+};
+
+/// Parameters of compute_groebner_basis().
+struct BuchbergerParams {
+  BuchbergerVariant variant;
+  /// Time, size (terms of any intermediate polynomial), memory, work and cancellation.
   Budget budget;
 };
 

@@ -3,9 +3,8 @@
 /// Implicitization: from a parametrization to the implicit equation of its image
 /// (Theorems 1.8 and 1.9 of the seed thesis, with the lcm of the denominators).
 
-#include <string>
-
 #include <optional>
+#include <string>
 
 #include "implicitizer/groebner/buchberger.hpp"
 #include "implicitizer/groebner/modular_groebner.hpp"
@@ -37,10 +36,14 @@ enum class ImplicitizationMethod {
 /// (`unknown_method`) otherwise.
 ImplicitizationMethod parse_implicitization_method(const std::string& name);
 
-/// Options of implicitize().
+/// Parameters of implicitize().
 struct ImplicitizeParams {
   ImplicitizationMethod method = ImplicitizationMethod::automatic;
-  BuchbergerParams groebner;  ///< includes the budget
+  /// Time, size, memory, work and cancellation of the whole call: every route and
+  /// every head start of `auto` runs under it.
+  Budget budget;
+  /// The pair selection and criteria of the Gröbner route (over ℚ and modulo primes).
+  BuchbergerVariant buchberger;
   /// The Gröbner route computes the elimination modulo primes (eliminate_modular,
   /// lifting only the elimination ideal) and proves the equation it lifts by exact
   /// substitution and check_implicit_equation's minimality; where that proof fails
@@ -52,13 +55,13 @@ struct ImplicitizeParams {
 /// The implicit equation and how it was found.
 struct ImplicitizeResult {
   Polynomial implicit{space_ring()};  ///< primitive, positive leading coefficient, in implicit_ring()
-  std::int32_t degree = 0;         ///< total degree of `implicit`
-  std::string method;              ///< the route used ("groebner", "resultant" or "interpolation")
-  std::string route;               ///< with method auto: why that route (empty otherwise)
-  bool verified = false;           ///< substitution into `implicit` gave exactly 0
-  double elapsed_ms = 0;           ///< wall time of the whole call
-  double verify_ms = 0;            ///< of which spent verifying
-  BuchbergerStats stats;           ///< of the elimination (Gröbner route)
+  std::int32_t degree = 0;            ///< total degree of `implicit`
+  std::string method;                 ///< the route used ("groebner", "resultant" or "interpolation")
+  std::string route;                  ///< with method auto: why that route (empty otherwise)
+  bool verified = false;              ///< substitution into `implicit` gave exactly 0
+  double elapsed_ms = 0;              ///< wall time of the whole call
+  double verify_ms = 0;               ///< of which spent verifying
+  BuchbergerStats stats;              ///< of the elimination (Gröbner route)
   /// Of the auxiliary resultant (resultant route; also set when `auto` probed it and
   /// took another route).
   std::optional<AuxiliaryResultantStats> resultant_stats;
@@ -86,8 +89,8 @@ struct ImplicitizeResult {
 ///     (Sylvester); NoSingleEquation with code `base_points` when the auxiliary
 ///     resultant vanishes identically (Theorem 1.14), InputError
 ///     `method_not_applicable` for other numbers of parameters;
-///   - interpolation: implicitize_by_interpolation() under the budget of
-///     `options.groebner` (any number of parameters, base points or not);
+///   - interpolation: implicitize_by_interpolation() under `options.budget` (any number of parameters, base points or
+///   not);
 ///   - auto: interpolation up to degree 4; else, after short head starts for
 ///     Buchberger, the resultant (tensor-product patches, triangular ones above
 ///     degree 9) or interpolation (triangular patches up to degree 9, base points);
