@@ -239,6 +239,8 @@ double start_band(const std::vector<std::array<std::int32_t, 3>>& exponents,
 
 }  // namespace
 
+// Longer than a screen: the three nested sparse Horner loops (in x, y, z) share their
+// buffers and lengths, and read as one algorithm only together.
 void RayPolynomialContext::expand_double(const RaySegment& segment, DoubleRayPolynomial& out) const {
   const Terms& terms = *terms_;
   const std::size_t size = static_cast<std::size_t>(degree_) + 1;
@@ -387,6 +389,7 @@ RayPointValue RayPolynomialContext::evaluate_double(const std::array<double, 3>&
   return out;
 }
 
+// Longer than a screen for the reason expand_double() is: one nested Horner scheme.
 std::vector<Integer> RayPolynomialContext::expand_exact(const RaySegment& segment, const Budget& budget) const {
   const Terms& terms = *terms_;
   // The segment's point at s is P + s·W exactly (dyadics), then (O + s·D)·2^E.

@@ -368,6 +368,9 @@ NodeSigns certified_signs(const std::vector<double>& b, const std::vector<double
 
 }  // namespace
 
+// Longer than a screen: each node's decisions (no root, one root to refine, a cluster,
+// re-expansion, halving) share the node's state and the workspace's stack, and read
+// best in the one loop that makes them, in the order they are tried.
 SegmentRootSearch isolate_first_root_bernstein(const RayPolynomialContext& context, const RaySegment& segment,
                                                const DoubleRayPolynomial& q, const RootIsolationParams& options) {
   const std::size_t n = q.coefficients.size() - 1;
