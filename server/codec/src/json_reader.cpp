@@ -11,19 +11,24 @@
 
 namespace implicitizer::json {
 
-rapidjson::Document parse_object(std::string_view body, const JsonParams& limits) {
-  check_json_depth(body, limits.max_depth);
+rapidjson::Document parse_json(std::string_view text, std::size_t max_depth) {
+  check_json_depth(text, max_depth);
   rapidjson::Document document;
   // Iterative parsing: no recursion whatever the input; invalid UTF-8 is a syntax
   // error. No kParseFullPrecisionFlag: Debian's RapidJSON 1.1.0 reads out of bounds
   // in StrtodDiyFp on long decimals with it (found by fuzz/request_fuzzer), and the
   // only number of a request, timeout_ms, needs no more than double's usual rounding.
-  document.Parse<rapidjson::kParseIterativeFlag | rapidjson::kParseValidateEncodingFlag>(body.data(), body.size());
+  document.Parse<rapidjson::kParseIterativeFlag | rapidjson::kParseValidateEncodingFlag>(text.data(), text.size());
   if (document.HasParseError()) {
     throw InputError("invalid_json",
                      std::string("invalid JSON: ") + rapidjson::GetParseError_En(document.GetParseError()),
                      document.GetErrorOffset());
   }
+  return document;
+}
+
+rapidjson::Document parse_object(std::string_view body, const JsonParams& limits) {
+  rapidjson::Document document = parse_json(body, limits.max_depth);
   if (!document.IsObject()) throw InputError("wrong_type", "the request body must be a JSON object");
   return document;
 }

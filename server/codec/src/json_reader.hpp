@@ -6,6 +6,7 @@
 
 #include <rapidjson/document.h>
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,6 +15,11 @@
 #include "implicitizer/core/errors.hpp"
 
 namespace implicitizer::json {
+
+/// `text` parsed as one JSON value, after the nesting guard (check_json_depth with
+/// `max_depth`). Throws InputError `json_too_deep` or `invalid_json` (at the byte
+/// offset of the syntax error).
+rapidjson::Document parse_json(std::string_view text, std::size_t max_depth);
 
 /// `body` parsed as one JSON object, after the nesting guard. Throws InputError
 /// `json_too_deep`, `invalid_json` (at the byte offset of the syntax error) or

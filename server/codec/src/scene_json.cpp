@@ -1,7 +1,6 @@
 #include "implicitizer/codec/scene_json.hpp"
 
 #include <rapidjson/document.h>
-#include <rapidjson/error/en.h>
 #include <rapidjson/stringbuffer.h>
 #include <rapidjson/writer.h>
 
@@ -13,7 +12,7 @@
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 #include "implicitizer/polynomial/parser.hpp"
-#include "json_depth.hpp"
+#include "json_reader.hpp"
 #include "scene_value.hpp"
 
 namespace implicitizer {
@@ -235,15 +234,7 @@ SceneNode decode_scene(const rapidjson::Value& value, const std::string& path) {
 }
 
 SceneNode parse_scene_json(std::string_view text, const std::string& path) {
-  check_json_depth(text, kMaxSceneJsonDepth);
-  rapidjson::Document document;
-  document.Parse<rapidjson::kParseIterativeFlag | rapidjson::kParseValidateEncodingFlag>(text.data(), text.size());
-  if (document.HasParseError()) {
-    throw InputError("invalid_json",
-                     std::string("invalid JSON: ") + rapidjson::GetParseError_En(document.GetParseError()),
-                     document.GetErrorOffset());
-  }
-  return decode_scene(document, path);
+  return decode_scene(json::parse_json(text, kMaxSceneJsonDepth), path);
 }
 
 namespace {
