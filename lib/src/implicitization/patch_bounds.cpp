@@ -268,91 +268,115 @@ void check_domain(const Parametrization& parametrization, const ParameterDomain&
   if (parametrization.coordinates.empty()) throw std::invalid_argument("bound_patch: a coordinate expected");
 }
 
+// One layout for all forms: degree per parameter = the largest among ω and the ξ_i.
+Layout common_layout(const std::vector<Polynomial>& forms, std::size_t m) {
+  std::vector<std::size_t> extents(m, 1);
+  for (const Polynomial& f : forms) {
+    for (std::size_t j = 0; j < m; ++j) extents[j] = std::max(extents[j], static_cast<std::size_t>(f.degree_in(j) + 1));
+  }
+  return Layout(extents);
+}
+
+// The whole domain as one piece: every form in the Bernstein basis of the box.
+Piece root_piece(const std::vector<Polynomial>& forms, const Layout& layout, const ParameterDomain& domain,
+                 const Budget& budget) {
+  Piece root;
+  for (const auto& [a, b] : domain.intervals) root.box.emplace_back(to_mpq(a), to_mpq(b));
+  for (const Polynomial& f : forms) {
+    Coefficients c = dense_coefficients(f, layout);
+    for (std::size_t j = 0; j < layout.extents.size(); ++j) {
+      to_bernstein_along(c, layout, j, root.box[j].first, root.box[j].second);
+      budget.check(kWhere);
+    }
+    root.forms.push_back(std::move(c));
+  }
+  return root;
+}
+
+// What one level of the branch and bound learns, and the pieces it passes on.
+struct BoundState {
+  const Layout& layout;
+  const RingPtr& ring;
+  const PatchBoundsParams& params;
+  Range attained;  ///< the corner values seen so far: the patch reaches them
+  Range result;    ///< the hulls of the pieces kept
+};
+
+// Bisects `piece` along `axis` into `next`.
+void push_halves(const Piece& piece, const Layout& layout, std::size_t axis, std::vector<Piece>& next) {
+  auto [lower, upper] = bisect(piece, layout, axis);
+  next.push_back(std::move(lower));
+  next.push_back(std::move(upper));
+}
+
+// The next level: pieces whose denominator's coefficients change sign are bisected
+// until they agree (or a corner shows a zero); then, every corner value of this level
+// known, a piece whose hull lies inside the attained range cannot widen the box and is
+// dropped, and the others are bisected while depth remains, else their hull joins the
+// result.
+std::vector<Piece> bound_level(std::vector<Piece>& level, BoundState& s, const Budget& budget) {
+  const std::size_t n = s.attained.lo.size();
+  std::vector<Piece> next;
+  std::vector<std::pair<Piece, Range>> positive;
+  for (Piece& piece : level) {
+    budget.check(kWhere);
+    record_corners(piece, s.layout, s.ring, s.attained);
+    if (common_sign(piece.forms[0]) != 0) {
+      // All w_J < 0 needs no flip: the ratios and the convex weights are unchanged.
+      Range hull = hull_of(piece);
+      positive.emplace_back(std::move(piece), std::move(hull));
+      continue;
+    }
+    const std::optional<std::size_t> axis = choose_axis(piece, s.layout);
+    if (!axis || piece.depth >= s.params.max_denominator_depth) {
+      throw unbounded_error("could not prove the denominator zero-free on " + format_box(piece.box) + " within " +
+                            std::to_string(s.params.max_denominator_depth) + " bisections");
+    }
+    push_halves(piece, s.layout, *axis, next);
+  }
+  for (auto& [piece, hull] : positive) {
+    bool widens = false;
+    for (std::size_t i = 0; i < n; ++i)
+      widens = widens || *hull.lo[i] < *s.attained.lo[i] || *hull.hi[i] > *s.attained.hi[i];
+    if (!widens) continue;
+    const std::optional<std::size_t> axis =
+        piece.depth < s.params.tightening_depth ? choose_axis(piece, s.layout) : std::nullopt;
+    if (axis) {
+      push_halves(piece, s.layout, *axis, next);
+    } else {
+      for (std::size_t i = 0; i < n; ++i) s.result.include(i, *hull.lo[i], *hull.hi[i]);
+    }
+  }
+  return next;
+}
+
 }  // namespace
 
 PatchBounds bound_patch(const Parametrization& parametrization, const ParameterDomain& domain, const Budget& budget,
                         const PatchBoundsParams& params) {
   check_domain(parametrization, domain);
   const RingPtr& ring = parametrization.parameter_ring;
-  const std::size_t m = ring->num_variables();
   const std::size_t n = parametrization.coordinates.size();
   const std::vector<Polynomial> forms = common_denominator_form(parametrization);
-
-  // One layout for all forms: degree per parameter = the largest among ω and the ξ_i.
-  std::vector<std::size_t> extents(m, 1);
-  for (const Polynomial& f : forms) {
-    for (std::size_t j = 0; j < m; ++j) extents[j] = std::max(extents[j], static_cast<std::size_t>(f.degree_in(j) + 1));
-  }
-  const Layout layout(extents);
+  const Layout layout = common_layout(forms, ring->num_variables());
   // The size limit bounds the Bernstein coefficients held at once: layout.size per
   // form and piece.
   budget.check_terms(layout.size * forms.size(), kWhere);
 
-  Piece root;
-  for (const auto& [a, b] : domain.intervals) root.box.emplace_back(to_mpq(a), to_mpq(b));
-  for (const Polynomial& f : forms) {
-    Coefficients c = dense_coefficients(f, layout);
-    for (std::size_t j = 0; j < m; ++j) {
-      to_bernstein_along(c, layout, j, root.box[j].first, root.box[j].second);
-      budget.check(kWhere);
-    }
-    root.forms.push_back(std::move(c));
-  }
-
-  Range attained(n), result(n);
-  std::vector<Piece> level{std::move(root)};
+  BoundState state{layout, ring, params, Range(n), Range(n)};
+  std::vector<Piece> level;
+  level.push_back(root_piece(forms, layout, domain, budget));
   while (!level.empty()) {
     budget.check_terms(level.size() * layout.size * forms.size(), kWhere);
-    std::vector<Piece> next;
-    std::vector<std::pair<Piece, Range>> positive;
-    for (Piece& piece : level) {
-      budget.check(kWhere);
-      record_corners(piece, layout, ring, attained);
-      const int sign = common_sign(piece.forms[0]);
-      if (sign != 0) {
-        // All w_J < 0 needs no flip: the ratios and the convex weights are unchanged.
-        Range hull = hull_of(piece);
-        positive.emplace_back(std::move(piece), std::move(hull));
-        continue;
-      }
-      // The coefficients of ω change sign but its corner values do not: bisect
-      // until they agree in sign, or a corner shows a zero.
-      const std::optional<std::size_t> axis = choose_axis(piece, layout);
-      if (!axis || piece.depth >= params.max_denominator_depth) {
-        throw unbounded_error("could not prove the denominator zero-free on " + format_box(piece.box) + " within " +
-                              std::to_string(params.max_denominator_depth) + " bisections");
-      }
-      auto [lower, upper] = bisect(piece, layout, *axis);
-      next.push_back(std::move(lower));
-      next.push_back(std::move(upper));
-    }
-    // Branch and bound: every corner value of this level is now known. A piece whose
-    // hull lies inside the attained range cannot widen the box and is dropped; the
-    // others are bisected while depth remains, else their hull joins the result.
-    for (auto& [piece, hull] : positive) {
-      bool widens = false;
-      for (std::size_t i = 0; i < n; ++i)
-        widens = widens || *hull.lo[i] < *attained.lo[i] || *hull.hi[i] > *attained.hi[i];
-      if (!widens) continue;
-      const std::optional<std::size_t> axis =
-          piece.depth < params.tightening_depth ? choose_axis(piece, layout) : std::nullopt;
-      if (!axis) {
-        for (std::size_t i = 0; i < n; ++i) result.include(i, *hull.lo[i], *hull.hi[i]);
-        continue;
-      }
-      auto [lower, upper] = bisect(piece, layout, *axis);
-      next.push_back(std::move(lower));
-      next.push_back(std::move(upper));
-    }
-    level = std::move(next);
+    level = bound_level(level, state, budget);
   }
 
   PatchBounds bounds;
   for (std::size_t i = 0; i < n; ++i) {
     // Dropped pieces lie inside the attained range, kept ones inside their hulls.
-    result.include(i, *attained.lo[i], *attained.hi[i]);
-    bounds.lo.push_back(to_rational(*result.lo[i]));
-    bounds.hi.push_back(to_rational(*result.hi[i]));
+    state.result.include(i, *state.attained.lo[i], *state.attained.hi[i]);
+    bounds.lo.push_back(to_rational(*state.result.lo[i]));
+    bounds.hi.push_back(to_rational(*state.result.hi[i]));
   }
   return bounds;
 }

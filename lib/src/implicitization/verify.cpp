@@ -109,37 +109,39 @@ bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& para
   return substitutes_to_zero(implicit, parametrization, forms, budget);
 }
 
-bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& parametrization,
-                         std::span<const Polynomial> forms, const Budget& budget) {
-  check_rings(implicit, parametrization);
-  if (implicit.is_zero()) return true;
-  const RingPtr& params = parametrization.parameter_ring;
-  const std::size_t k = params->num_variables();
-  const std::size_t n = parametrization.coordinates.size();
-  if (forms.size() != n + 1) throw std::invalid_argument("substitutes_to_zero: ω and one form per coordinate expected");
-  const std::int32_t d = implicit.total_degree();
-  const Polynomial f = implicit.primitive_part();
+namespace {
 
-  // The grid: d·m_j + 1 points along parameter j, of which only those whose indices
-  // sum to at most d·N are used (N the largest total degree among the forms; see the
-  // header: G's exponents lie in that lower set, and its points determine G).
-  std::vector<std::size_t> grid(k);
-  std::vector<std::int32_t> top(k, 0);
+// The grid of the header's argument: d·m_j + 1 points along parameter j, of which
+// only those whose indices sum to at most d·N are used (N the largest total degree
+// among the forms): G's exponents lie in that lower set, and its points determine G.
+struct SubstitutionGrid {
+  std::vector<std::int32_t> degrees;  ///< m_j: the largest degree in parameter j among the forms
+  std::vector<std::size_t> sides;     ///< d·m_j + 1
+  std::size_t index_sum_bound = 0;    ///< d·N
+  double points = 1;                  ///< ∏ sides, the whole box
+};
+
+SubstitutionGrid substitution_grid(std::span<const Polynomial> forms, std::size_t k, std::int32_t d) {
+  SubstitutionGrid grid;
+  grid.degrees.assign(k, 0);
+  grid.sides.resize(k);
   std::int32_t total = 0;
-  double points = 1;
   for (const auto& p : forms) total = std::max(total, p.total_degree());
-  const std::size_t index_sum_bound = static_cast<std::size_t>(d) * static_cast<std::size_t>(total);
+  grid.index_sum_bound = static_cast<std::size_t>(d) * static_cast<std::size_t>(total);
   for (std::size_t j = 0; j < k; ++j) {
-    for (const auto& p : forms) top[j] = std::max(top[j], p.degree_in(j));
-    grid[j] = static_cast<std::size_t>(d * top[j]) + 1;
-    points *= static_cast<double>(grid[j]);
+    for (const auto& p : forms) grid.degrees[j] = std::max(grid.degrees[j], p.degree_in(j));
+    grid.sides[j] = static_cast<std::size_t>(d * grid.degrees[j]) + 1;
+    grid.points *= static_cast<double>(grid.sides[j]);
   }
-  if (points > kMaxGridPoints) return substitutes_to_zero_symbolic(implicit, parametrization, budget);
+  return grid;
+}
 
-  // B = Σ |f_α|·‖ω‖^(d−|α|)·Π ‖ξ_v‖^α_v bounds every coefficient of G.
+// B = Σ |f_α|·‖ω‖^(d−|α|)·Π ‖ξ_v‖^α_v bounds every coefficient of G.
+Integer coefficient_bound(const Polynomial& f, std::span<const Polynomial> forms, std::int32_t d) {
   std::vector<Integer> norms;
   for (const auto& p : forms) norms.push_back(norm1(p));
   const Ring& space = *f.ring();
+  const std::size_t n = space.num_variables();
   Integer bound = 0;
   for (std::size_t t = 0; t < f.num_terms(); ++t) {
     const std::int32_t* e = space.exponents(f.monomial(t));
@@ -155,67 +157,111 @@ bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& para
     }
     bound += term;
   }
-  const std::size_t needed_bits = mpz_sizeinbase(bound.get_mpz_t(), 2) + 1;
+  return bound;
+}
 
+// G = ω^d·F(ξ/ω) modulo one prime, evaluated at grid points without expanding it.
+class SubstitutionModulo {
+ public:
+  SubstitutionModulo(const Polynomial& f, std::span<const Polynomial> forms, const SubstitutionGrid& grid,
+                     mp_limb_t prime)
+      : f_(f), forms_(forms), grid_(grid), d_(f.total_degree()), f_residues_(residues_of(f, prime)) {
+    nmod_init(&mod_, prime);
+    for (const auto& form : forms) form_residues_.push_back(residues_of(form, prime));
+    parameter_powers_.resize(grid.degrees.size());
+    value_powers_.assign(forms.size(), std::vector<mp_limb_t>(static_cast<std::size_t>(d_) + 1));
+  }
+
+  // G mod p at the grid point `index` (parameter j taking the value index[j]).
+  mp_limb_t value_at(const std::vector<std::size_t>& index) {
+    for (std::size_t j = 0; j < index.size(); ++j) {
+      parameter_powers_[j].assign(static_cast<std::size_t>(grid_.degrees[j]) + 1, 1);
+      for (std::size_t e = 1; e < parameter_powers_[j].size(); ++e) {
+        parameter_powers_[j][e] = nmod_mul(parameter_powers_[j][e - 1], index[j], mod_);
+      }
+    }
+    for (std::size_t i = 0; i < forms_.size(); ++i) {
+      const mp_limb_t value = evaluate_mod(forms_[i], form_residues_[i], parameter_powers_, mod_);
+      value_powers_[i][0] = 1;
+      for (std::size_t e = 1; e <= static_cast<std::size_t>(d_); ++e) {
+        value_powers_[i][e] = nmod_mul(value_powers_[i][e - 1], value, mod_);
+      }
+    }
+    const Ring& space = *f_.ring();
+    const std::size_t n = space.num_variables();
+    mp_limb_t g = 0;
+    for (std::size_t t = 0; t < f_.num_terms(); ++t) {
+      const std::int32_t* e = space.exponents(f_.monomial(t));
+      std::int32_t degree = 0;
+      mp_limb_t term = f_residues_[t];
+      for (std::size_t v = 0; v < n; ++v) {
+        term = nmod_mul(term, value_powers_[v + 1][static_cast<std::size_t>(e[v])], mod_);
+        degree += e[v];
+      }
+      term = nmod_mul(term, value_powers_[0][static_cast<std::size_t>(d_ - degree)], mod_);
+      g = nmod_add(g, term, mod_);
+    }
+    return g;
+  }
+
+ private:
+  const Polynomial& f_;
+  std::span<const Polynomial> forms_;
+  const SubstitutionGrid& grid_;
+  std::int32_t d_;
+  nmod_t mod_;
+  std::vector<mp_limb_t> f_residues_;
+  std::vector<std::vector<mp_limb_t>> form_residues_;
+  std::vector<std::vector<mp_limb_t>> parameter_powers_;  // [j][e]: the value of parameter j to the e
+  std::vector<std::vector<mp_limb_t>> value_powers_;      // [i][e]: form i's value to the e
+};
+
+// Whether G ≡ 0 modulo the prime of `g`: it vanishes at every point of the grid's lower
+// set. Parameter j takes the values 0, 1, …, sides[j] − 1 (distinct modulo p).
+bool vanishes_on_grid(SubstitutionModulo& g, const SubstitutionGrid& grid, const Budget& budget) {
+  const std::size_t k = grid.sides.size();
+  std::vector<std::size_t> index(k, 0);
+  std::size_t index_sum = 0;
+  for (bool more = true; more;) {
+    // Outside the lower set there is nothing to evaluate.
+    if (index_sum <= grid.index_sum_bound && g.value_at(index) != 0) return false;
+    // The next grid point (last parameter fastest); a budget check per grid line.
+    more = false;
+    for (std::size_t j = k; j-- > 0;) {
+      if (++index[j] < grid.sides[j]) {
+        ++index_sum;
+        more = true;
+        break;
+      }
+      index_sum -= index[j] - 1;
+      index[j] = 0;
+      if (j == k - 1) budget.check("verification");
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& parametrization,
+                         std::span<const Polynomial> forms, const Budget& budget) {
+  check_rings(implicit, parametrization);
+  if (implicit.is_zero()) return true;
+  const std::size_t k = parametrization.parameter_ring->num_variables();
+  const std::size_t n = parametrization.coordinates.size();
+  if (forms.size() != n + 1) throw std::invalid_argument("substitutes_to_zero: ω and one form per coordinate expected");
+  const Polynomial f = implicit.primitive_part();
+  const SubstitutionGrid grid = substitution_grid(forms, k, f.total_degree());
+  if (grid.points > kMaxGridPoints) return substitutes_to_zero_symbolic(implicit, parametrization, budget);
+
+  // G = 0 exactly when G ≡ 0 modulo primes whose product exceeds 2B.
+  const std::size_t needed_bits = mpz_sizeinbase(coefficient_bound(f, forms, f.total_degree()).get_mpz_t(), 2) + 1;
   PrimeSequence primes(/*skip=*/3);
-  std::vector<std::vector<mp_limb_t>> parameter_powers(k);
-  std::vector<std::vector<mp_limb_t>> value_powers(n + 1, std::vector<mp_limb_t>(static_cast<std::size_t>(d) + 1));
   for (std::size_t modulus_bits = 0; modulus_bits <= needed_bits;) {
     const mp_limb_t p = primes.next();
     modulus_bits += FLINT_BIT_COUNT(p) - 1;  // p > 2^(bits−1): a lower bound on the product's size
-    nmod_t mod;
-    nmod_init(&mod, p);
-    std::vector<std::vector<mp_limb_t>> form_residues;
-    for (const auto& form : forms) form_residues.push_back(residues_of(form, p));
-    const std::vector<mp_limb_t> f_residues = residues_of(f, p);
-    // G mod p at the grid point `index` (parameter j taking the value index[j]).
-    auto value_at = [&](const std::vector<std::size_t>& index) {
-      for (std::size_t j = 0; j < k; ++j) {
-        parameter_powers[j].assign(static_cast<std::size_t>(top[j]) + 1, 1);
-        for (std::size_t e = 1; e < parameter_powers[j].size(); ++e) {
-          parameter_powers[j][e] = nmod_mul(parameter_powers[j][e - 1], index[j], mod);
-        }
-      }
-      for (std::size_t i = 0; i <= n; ++i) {
-        const mp_limb_t value = evaluate_mod(forms[i], form_residues[i], parameter_powers, mod);
-        value_powers[i][0] = 1;
-        for (std::size_t e = 1; e <= static_cast<std::size_t>(d); ++e) {
-          value_powers[i][e] = nmod_mul(value_powers[i][e - 1], value, mod);
-        }
-      }
-      mp_limb_t g = 0;
-      for (std::size_t t = 0; t < f.num_terms(); ++t) {
-        const std::int32_t* e = space.exponents(f.monomial(t));
-        std::int32_t degree = 0;
-        mp_limb_t term = f_residues[t];
-        for (std::size_t v = 0; v < n; ++v) {
-          term = nmod_mul(term, value_powers[v + 1][static_cast<std::size_t>(e[v])], mod);
-          degree += e[v];
-        }
-        term = nmod_mul(term, value_powers[0][static_cast<std::size_t>(d - degree)], mod);
-        g = nmod_add(g, term, mod);
-      }
-      return g;
-    };
-    // Parameter j takes the values 0, 1, …, grid[j] − 1: distinct modulo p.
-    std::vector<std::size_t> index(k, 0);
-    std::size_t index_sum = 0;
-    for (bool more = true; more;) {
-      // Outside the lower set there is nothing to evaluate.
-      if (index_sum <= index_sum_bound && value_at(index) != 0) return false;  // G mod p ≠ 0, so G ≠ 0
-      // The next grid point (last parameter fastest); a budget check per grid line.
-      more = false;
-      for (std::size_t j = k; j-- > 0;) {
-        if (++index[j] < grid[j]) {
-          ++index_sum;
-          more = true;
-          break;
-        }
-        index_sum -= index[j] - 1;
-        index[j] = 0;
-        if (j == k - 1) budget.check("verification");
-      }
-    }
+    SubstitutionModulo g(f, forms, grid, p);
+    if (!vanishes_on_grid(g, grid, budget)) return false;  // G mod p ≠ 0, so G ≠ 0
   }
   return true;
 }

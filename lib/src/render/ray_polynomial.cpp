@@ -200,37 +200,52 @@ ValueAndGradient evaluate_nested(const std::vector<std::array<std::int32_t, 3>>&
   return g;
 }
 
+// The linear polynomials X(s) = x0 + x1·s of the three coordinates on a segment,
+// their majorants, and how far x0 may be from the true start. x0 = fl(o + t_begin·d)
+// is taken as exact (the rounding goes into the band, start_band()); x1 =
+// fl(fl(t_end − t_begin)·d) is within γ₂ of the true slope, relative to itself, which
+// the coefficient bound covers.
+struct SegmentLines {
+  std::array<double, 3> a0{}, a1{}, m0{}, m1{}, delta{};
+};
+
+SegmentLines segment_lines(const RaySegment& segment) {
+  const double u = std::numeric_limits<double>::epsilon() / 2;
+  const double width = segment.t_end - segment.t_begin;
+  SegmentLines l;
+  for (std::size_t v = 0; v < 3; ++v) {
+    const double o = segment.origin[v], d = segment.direction[v];
+    l.a0[v] = o + segment.t_begin * d;
+    l.a1[v] = width * d;
+    l.m0[v] = std::fabs(l.a0[v]);
+    l.m1[v] = std::fabs(l.a1[v]);
+    // |x0 − (o + t_begin·d)| ≤ 2.02u(|o| + |t_begin·d|); exact when t_begin = 0.
+    l.delta[v] = segment.t_begin == 0 ? 0.0 : 2.02 * u * (std::fabs(o) + std::fabs(segment.t_begin * d));
+  }
+  return l;
+}
+
+// The band: F(P + e) − F(P) for the true start P + e, |e| ≤ δ, has power (and so
+// Bernstein) coefficients bounded coefficient-wise by those of F̂(P̂ + δ) − F̂(P̂),
+// whose sum, its value at s = 1, is at most Σ_i δ_i·∂_iF̂(P̂(1) + δ).
+double start_band(const std::vector<std::array<std::int32_t, 3>>& exponents,
+                  const std::vector<double>& abs_coefficients, const SegmentLines& l) {
+  const double u = std::numeric_limits<double>::epsilon() / 2;
+  const ValueAndGradient m =
+      evaluate_nested(exponents, abs_coefficients.data(), l.m0[0] + l.m1[0] * (1 + 4 * u) + l.delta[0],
+                      l.m0[1] + l.m1[1] * (1 + 4 * u) + l.delta[1], l.m0[2] + l.m1[2] * (1 + 4 * u) + l.delta[2]);
+  return 1.01 * (m.dx * l.delta[0] + m.dy * l.delta[1] + m.dz * l.delta[2]);
+}
+
 }  // namespace
 
 void RayPolynomialContext::expand_double(const RaySegment& segment, DoubleRayPolynomial& out) const {
   const Terms& terms = *terms_;
   const std::size_t size = static_cast<std::size_t>(degree_) + 1;
   const double u = std::numeric_limits<double>::epsilon() / 2;
-  // The linear polynomials X(s) = x0 + x1·s of the three coordinates and their
-  // majorants. x0 = fl(o + t_begin·d) is taken as exact (the rounding goes into the
-  // band below); x1 = fl(fl(t_end − t_begin)·d) is within γ₂ of the true slope,
-  // relative to itself, which the coefficient bound covers.
-  const double width = segment.t_end - segment.t_begin;
-  std::array<double, 3> a0{}, a1{}, m0{}, m1{}, delta{};
-  for (std::size_t v = 0; v < 3; ++v) {
-    const double o = segment.origin[v], d = segment.direction[v];
-    a0[v] = o + segment.t_begin * d;
-    a1[v] = width * d;
-    m0[v] = std::fabs(a0[v]);
-    m1[v] = std::fabs(a1[v]);
-    // |x0 − (o + t_begin·d)| ≤ 2.02u(|o| + |t_begin·d|); exact when t_begin = 0.
-    delta[v] = segment.t_begin == 0 ? 0.0 : 2.02 * u * (std::fabs(o) + std::fabs(segment.t_begin * d));
-  }
-  // The band: F(P + e) − F(P) for the true start P + e, |e| ≤ δ, has power (and so
-  // Bernstein) coefficients bounded coefficient-wise by those of F̂(P̂ + δ) − F̂(P̂),
-  // whose sum, its value at s = 1, is at most Σ_i δ_i·∂_iF̂(P̂(1) + δ).
-  out.band = 0;
-  if (segment.t_begin != 0) {
-    const ValueAndGradient m =
-        evaluate_nested(terms.exponents, terms.abs_coefficients.data(), m0[0] + m1[0] * (1 + 4 * u) + delta[0],
-                        m0[1] + m1[1] * (1 + 4 * u) + delta[1], m0[2] + m1[2] * (1 + 4 * u) + delta[2]);
-    out.band = 1.01 * (m.dx * delta[0] + m.dy * delta[1] + m.dz * delta[2]);
-  }
+  const SegmentLines lines = segment_lines(segment);
+  const auto& [a0, a1, m0, m1, delta] = lines;
+  out.band = segment.t_begin == 0 ? 0.0 : start_band(terms.exponents, terms.abs_coefficients, lines);
 
   out.coefficients.assign(size, 0.0);
   out.majorant.assign(size, 0.0);

@@ -346,6 +346,28 @@ void RootIsolationStats::add(const RootIsolationStats& other) {
   for (std::size_t i = 0; i < kFallbackReasons; ++i) fallbacks[i] += other.fallbacks[i];
 }
 
+namespace {
+
+// What the certified signs of a node's Bernstein coefficients say.
+struct NodeSigns {
+  bool all_same = true;  ///< every sign certain and equal: no root on the node
+  bool certain = true;   ///< no sign is uncertain
+};
+
+// Fills signs[j] with the certified sign of b_j (0 where the error bound covers 0).
+NodeSigns certified_signs(const std::vector<double>& b, const std::vector<double>& m, const Node& node,
+                          std::vector<int>& signs) {
+  NodeSigns out;
+  for (std::size_t j = 0; j < b.size(); ++j) {
+    signs[j] = certified_sign(b[j], node.epsilon * m[j] * (1 + 4 * kUnitRoundoff) + node.band);
+    if (signs[j] == 0 || signs[j] != signs[0]) out.all_same = false;
+    out.certain = out.certain && signs[j] != 0;
+  }
+  return out;
+}
+
+}  // namespace
+
 SegmentRootSearch isolate_first_root_bernstein(const RayPolynomialContext& context, const RaySegment& segment,
                                                const DoubleRayPolynomial& q, const RootIsolationParams& options) {
   const std::size_t n = q.coefficients.size() - 1;
@@ -377,13 +399,9 @@ SegmentRootSearch isolate_first_root_bernstein(const RayPolynomialContext& conte
     std::copy(w.pool.begin() + static_cast<std::ptrdiff_t>(offset + size), w.pool.end(), w.m.begin());
     w.pool.resize(offset);
 
-    bool all_same = true, certain = true;
-    for (std::size_t j = 0; j <= n; ++j) {
-      signs[j] = certified_sign(w.b[j], node.epsilon * w.m[j] * (1 + 4 * kUnitRoundoff) + node.band);
-      if (signs[j] == 0 || signs[j] != signs[0]) all_same = false;
-      certain = certain && signs[j] != 0;
-    }
-    if (all_same) continue;  // q has the sign of every b_j on the node: no root
+    const NodeSigns node_signs = certified_signs(w.b, w.m, node, signs);
+    if (node_signs.all_same) continue;  // q has the sign of every b_j on the node: no root
+    const bool certain = node_signs.certain;
     const double width = node.t1 - node.t0;
     const double node_width = std::ldexp(1.0, -node.level);
     const double t_lo = node.t0 + width * node.s_lo;
@@ -429,32 +447,100 @@ SegmentRootSearch isolate_first_root_bernstein(const RayPolynomialContext& conte
   return out;
 }
 
+namespace {
+
+// The square-free part of q(s) = Σ q_k s^k, primitive: p / gcd(p, p') has the same
+// roots, all simple, so every root is a sign change (a tangent ray's double root
+// included). Sets `p` to it.
+void set_square_free_part(FmpzPoly& p, const std::vector<Integer>& q) {
+  Fmpz c;
+  for (std::size_t k = 0; k < q.size(); ++k) {
+    fmpz_set_mpz(c.get(), q[k].get_mpz_t());
+    fmpz_poly_set_coeff_fmpz(p.get(), static_cast<slong>(k), c.get());
+  }
+  if (fmpz_poly_degree(p.get()) < 1) return;
+  FmpzPoly derivative, divisor;
+  fmpz_poly_derivative(derivative.get(), p.get());
+  fmpz_poly_gcd(divisor.get(), p.get(), derivative.get());
+  if (fmpz_poly_degree(divisor.get()) > 0) fmpz_poly_div(p.get(), p.get(), divisor.get());
+  remove_content(p.get());
+}
+
+// The parameter interval of the search: t = begin + width·s for s in [0, 1].
+struct ExactInterval {
+  Dyadic begin;
+  Dyadic width;
+  double width_t = 0;
+};
+
+// One simple root of p in (c/2^k, (c+1)/2^k) and p(c/2^k) ≠ 0 (checked on the way
+// there): bisects on the sign of p until the interval is below 2·tolerance.
+SegmentRootSearch bisect_simple_root(const fmpz_poly_struct* p, const ExactItem& item, const ExactInterval& interval,
+                                     const RootIsolationParams& options, const Budget& budget, int subdivisions) {
+  Fmpz a, next, value, term;
+  fmpz_set(a.get(), item.c.get());
+  ulong m = item.k;
+  const int sign_lo = sign_at(p, a.get(), m, value, term);
+  for (;;) {
+    const double t_lo = parameter_at(interval.begin, interval.width, a.get(), m);
+    const double tolerance_t = options.relative_tolerance * std::max(options.scale, t_lo);
+    if (interval.width_t * std::ldexp(1.0, -static_cast<int>(m)) <= 1.9 * tolerance_t) break;
+    budget.check("isolate_first_root_descartes");
+    ++subdivisions;
+    fmpz_mul_2exp(next.get(), a.get(), 1);
+    fmpz_add_ui(next.get(), next.get(), 1);  // the midpoint (2a + 1)/2^(m+1)
+    ++m;
+    const int sign = sign_at(p, next.get(), m, value, term);
+    if (sign == 0) return root_at(parameter_at(interval.begin, interval.width, next.get(), m), subdivisions);
+    fmpz_mul_2exp(a.get(), a.get(), 1);
+    if (sign == sign_lo) fmpz_set(a.get(), next.get());
+  }
+  fmpz_mul_2exp(next.get(), a.get(), 1);
+  fmpz_add_ui(next.get(), next.get(), 1);
+  return root_at(parameter_at(interval.begin, interval.width, next.get(), m + 1), subdivisions);
+}
+
+// Halves `item` onto the stack, to be taken left half first, then its midpoint, then
+// the right half: Q_L(x) = 2^n Q(x/2), Q_R(x) = Q_L(x + 1).
+void push_halves(const ExactItem& item, std::vector<std::unique_ptr<ExactItem>>& stack) {
+  const fmpz_poly_struct* node = item.polynomial.get();
+  const slong n = fmpz_poly_degree(node);
+  auto left = std::make_unique<ExactItem>();
+  auto right = std::make_unique<ExactItem>();
+  auto midpoint = std::make_unique<ExactItem>();
+  fmpz_poly_set(left->polynomial.get(), node);
+  for (slong i = 0; i < n; ++i) {
+    fmpz_mul_2exp(left->polynomial.get()->coeffs + i, left->polynomial.get()->coeffs + i, static_cast<ulong>(n - i));
+  }
+  remove_content(left->polynomial.get());
+  Fmpz one;
+  fmpz_one(one.get());
+  fmpz_poly_taylor_shift(right->polynomial.get(), left->polynomial.get(), one.get());
+  midpoint->is_midpoint = true;
+  midpoint->midpoint_is_root = fmpz_is_zero(right->polynomial.get()->coeffs);
+  if (midpoint->midpoint_is_root) fmpz_poly_shift_right(right->polynomial.get(), right->polynomial.get(), 1);
+  fmpz_mul_2exp(left->c.get(), item.c.get(), 1);
+  fmpz_add_ui(right->c.get(), left->c.get(), 1);
+  fmpz_set(midpoint->c.get(), item.c.get());
+  left->k = right->k = item.k + 1;
+  midpoint->k = item.k;
+  stack.push_back(std::move(right));
+  stack.push_back(std::move(midpoint));
+  stack.push_back(std::move(left));
+}
+
+}  // namespace
+
 SegmentRootSearch isolate_first_root_descartes(const std::vector<Integer>& q, double t_begin, double t_end,
                                                const RootIsolationParams& options, const Budget& budget) {
   if (q.empty() || sgn(q.front()) == 0) return root_at(t_begin, 0);  // q ≡ 0 or q(0) = 0
   FmpzPoly p;
-  {
-    Fmpz c;
-    for (std::size_t k = 0; k < q.size(); ++k) {
-      fmpz_set_mpz(c.get(), q[k].get_mpz_t());
-      fmpz_poly_set_coeff_fmpz(p.get(), static_cast<slong>(k), c.get());
-    }
-  }
+  set_square_free_part(p, q);
   SegmentRootSearch none;
   none.outcome = SegmentRootSearch::Outcome::no_root;
   if (fmpz_poly_degree(p.get()) < 1) return none;  // a nonzero constant
-  // Square-free part: p / gcd(p, p') has the same roots, all simple, so every root
-  // is a sign change (a tangent ray's double root included).
-  {
-    FmpzPoly derivative, divisor;
-    fmpz_poly_derivative(derivative.get(), p.get());
-    fmpz_poly_gcd(divisor.get(), p.get(), derivative.get());
-    if (fmpz_poly_degree(divisor.get()) > 0) fmpz_poly_div(p.get(), p.get(), divisor.get());
-    remove_content(p.get());
-  }
-  const Dyadic begin = Dyadic::of(t_begin);
-  const Dyadic width = add(Dyadic::of(t_end), negate(begin));
-  const double width_t = t_end - t_begin;
+  ExactInterval interval{Dyadic::of(t_begin), {}, t_end - t_begin};
+  interval.width = add(Dyadic::of(t_end), negate(interval.begin));
   int subdivisions = 0;
   FmpzPoly scratch;
 
@@ -470,61 +556,13 @@ SegmentRootSearch isolate_first_root_descartes(const std::vector<Integer>& q, do
       Fmpz numerator;
       fmpz_mul_2exp(numerator.get(), item->c.get(), 1);
       fmpz_add_ui(numerator.get(), numerator.get(), 1);
-      return root_at(parameter_at(begin, width, numerator.get(), item->k + 1), subdivisions);
+      return root_at(parameter_at(interval.begin, interval.width, numerator.get(), item->k + 1), subdivisions);
     }
-    const fmpz_poly_struct* node = item->polynomial.get();
-    const int bound = descartes_bound(node, scratch);
+    const int bound = descartes_bound(item->polynomial.get(), scratch);
     if (bound == 0) continue;
-    if (bound == 1) {
-      // One simple root in (c/2^k, (c+1)/2^k) and p(c/2^k) ≠ 0 (checked on the way
-      // here): bisect on the sign of p until the interval is below 2·tolerance.
-      Fmpz a, next, value, term;
-      fmpz_set(a.get(), item->c.get());
-      ulong m = item->k;
-      const int sign_lo = sign_at(p.get(), a.get(), m, value, term);
-      for (;;) {
-        const double t_lo = parameter_at(begin, width, a.get(), m);
-        const double tolerance_t = options.relative_tolerance * std::max(options.scale, t_lo);
-        if (width_t * std::ldexp(1.0, -static_cast<int>(m)) <= 1.9 * tolerance_t) break;
-        budget.check("isolate_first_root_descartes");
-        ++subdivisions;
-        fmpz_mul_2exp(next.get(), a.get(), 1);
-        fmpz_add_ui(next.get(), next.get(), 1);  // the midpoint (2a + 1)/2^(m+1)
-        ++m;
-        const int sign = sign_at(p.get(), next.get(), m, value, term);
-        if (sign == 0) return root_at(parameter_at(begin, width, next.get(), m), subdivisions);
-        fmpz_mul_2exp(a.get(), a.get(), 1);
-        if (sign == sign_lo) fmpz_set(a.get(), next.get());
-      }
-      fmpz_mul_2exp(next.get(), a.get(), 1);
-      fmpz_add_ui(next.get(), next.get(), 1);
-      return root_at(parameter_at(begin, width, next.get(), m + 1), subdivisions);
-    }
-    // Two or more: halve. Q_L(x) = 2^n Q(x/2), Q_R(x) = Q_L(x + 1).
-    ++subdivisions;
-    const slong n = fmpz_poly_degree(node);
-    auto left = std::make_unique<ExactItem>();
-    auto right = std::make_unique<ExactItem>();
-    auto midpoint = std::make_unique<ExactItem>();
-    fmpz_poly_set(left->polynomial.get(), node);
-    for (slong i = 0; i < n; ++i) {
-      fmpz_mul_2exp(left->polynomial.get()->coeffs + i, left->polynomial.get()->coeffs + i, static_cast<ulong>(n - i));
-    }
-    remove_content(left->polynomial.get());
-    Fmpz one;
-    fmpz_one(one.get());
-    fmpz_poly_taylor_shift(right->polynomial.get(), left->polynomial.get(), one.get());
-    midpoint->is_midpoint = true;
-    midpoint->midpoint_is_root = fmpz_is_zero(right->polynomial.get()->coeffs);
-    if (midpoint->midpoint_is_root) fmpz_poly_shift_right(right->polynomial.get(), right->polynomial.get(), 1);
-    fmpz_mul_2exp(left->c.get(), item->c.get(), 1);
-    fmpz_add_ui(right->c.get(), left->c.get(), 1);
-    fmpz_set(midpoint->c.get(), item->c.get());
-    left->k = right->k = item->k + 1;
-    midpoint->k = item->k;
-    stack.push_back(std::move(right));
-    stack.push_back(std::move(midpoint));
-    stack.push_back(std::move(left));
+    if (bound == 1) return bisect_simple_root(p.get(), *item, interval, options, budget, subdivisions);
+    ++subdivisions;  // two or more roots: halve
+    push_halves(*item, stack);
   }
   // No root in [0, 1): the last candidate is s = 1.
   Fmpz sum;

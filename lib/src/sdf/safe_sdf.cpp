@@ -138,6 +138,9 @@ SafeSdf SafeSdf::build(const Polynomial& f, const SceneBox& box, const Budget& b
   return sdf;
 }
 
+// One function longer than a screen on purpose: it is the GLSL function, written top
+// to bottom as it reads in the shader; split, one shader function would be spread over
+// several C++ ones.
 std::string SafeSdf::to_glsl(const std::string& function) const {
   const Constants<float>& k = constants_float_;
   const auto f = [](float x) { return format_glsl_float(x); };
