@@ -1,6 +1,7 @@
 /// \file
-/// libFuzzer target for the HTTP requests: the decoders of server/codec
-/// (json_codec.hpp) and the answers the handlers compute from what they decode.
+/// libFuzzer target for the HTTP requests: the decoders of server/codec (one
+/// *_json.hpp per endpoint) and the answers (server/service) the handlers compute from
+/// what they decode.
 ///
 /// Decoding oracle: on any bytes, decode_implicitize_request(),
 /// decode_groebner_request(), decode_resultant_request(), decode_sdf_request() and
@@ -26,7 +27,11 @@
 #include <string_view>
 
 #include "config.hpp"
-#include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/codec/groebner_json.hpp"
+#include "implicitizer/codec/implicitize_json.hpp"
+#include "implicitizer/codec/render_json.hpp"
+#include "implicitizer/codec/resultant_json.hpp"
+#include "implicitizer/codec/sdf_json.hpp"
 #include "implicitizer/core/budget.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/polynomial/expression.hpp"
@@ -94,22 +99,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       for (const std::string& name : *request.parameters) (void)is_identifier(name);
     }
     request.timeout_seconds.reset();
-    answer_within_budget("/v1/implicitize", size, [&request](const Budget& budget) {
-      BuchbergerParams params;
-      params.budget = budget;
-      return answer_implicitize_request(request, params);
-    });
+    answer_within_budget("/v1/implicitize", size,
+                         [&request](const Budget& budget) { return answer_implicitize_request(request, budget); });
   } catch (const InputError&) {
   }
   try {
     GroebnerRequest request = decode_groebner_request(body);
     for (const std::string& polynomial : request.polynomials) parse_field(polynomial);
     request.timeout_seconds.reset();
-    answer_within_budget("/v1/groebner", size, [&request](const Budget& budget) {
-      BuchbergerParams params;
-      params.budget = budget;
-      return answer_groebner_request(request, params);
-    });
+    answer_within_budget("/v1/groebner", size,
+                         [&request](const Budget& budget) { return answer_groebner_request(request, budget); });
   } catch (const InputError&) {
   }
   try {

@@ -5,7 +5,7 @@
 #include <new>
 
 #include "arguments.hpp"
-#include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/codec/error_json.hpp"
 #include "implicitizer/core/errors.hpp"
 
 namespace implicitizer::cli {

@@ -6,12 +6,13 @@
 
 #include "arguments.hpp"
 #include "buchberger_flags.hpp"
+#include "choice_flag.hpp"
 #include "error_report.hpp"
 #include "help.hpp"
-#include "implicitizer/codec/groebner_request.hpp"
-#include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/codec/groebner_json.hpp"
 #include "implicitizer/core/budget.hpp"
 #include "implicitizer/polynomial/printer.hpp"
+#include "implicitizer/service/groebner_request.hpp"
 
 namespace implicitizer::cli {
 namespace {
@@ -35,7 +36,8 @@ void print_polynomials(const std::vector<Polynomial>& polynomials) {
 
 int run_groebner_command(std::span<const std::string> args) {
   GroebnerRequest request;
-  BuchbergerParams params;
+  Budget budget;
+  BuchbergerVariant variant;
   ErrorReport report;
   try {
     const std::vector<OptionSpec> spec = option_specs();
@@ -48,10 +50,7 @@ int run_groebner_command(std::span<const std::string> args) {
     request.polynomials = arguments.positionals();
     if (request.polynomials.empty()) throw UsageError("no polynomials given");
     if (const auto vars = arguments.value("vars")) request.variables = split_list(*vars, "vars");
-    if (const auto order = arguments.value("order")) {
-      if (*order != "lex" && *order != "grlex" && *order != "grevlex") {
-        throw UsageError("--order must be lex, grlex or grevlex, not '" + *order + "'");
-      }
+    if (const auto order = read_choice(arguments, "order", &MonomialOrder::from_name, report.json)) {
       request.order = *order;
     }
     if (const auto weights = arguments.value("weights")) {
@@ -60,20 +59,17 @@ int run_groebner_command(std::span<const std::string> args) {
       request.weights = std::move(w);
     }
     if (const auto eliminate = arguments.value("eliminate")) request.eliminate = split_list(*eliminate, "eliminate");
-    if (const auto method = arguments.value("method")) {
-      if (*method != "auto" && *method != "buchberger" && *method != "modular") {
-        throw UsageError("--method must be auto, buchberger or modular, not '" + *method + "'");
-      }
-      request.method = *method;
-    }
+    const auto method = read_choice(arguments, "method", parse_groebner_method, report.json);
+    if (method) request.method = *method;
     if (arguments.has("modular")) {
-      if (arguments.value("method") && request.method != "modular") {
-        throw UsageError("--modular contradicts --method " + request.method);
+      if (method && *method != GroebnerMethod::modular) {
+        throw UsageError(std::string("--modular contradicts --method ") + to_string(*method));
       }
-      request.method = "modular";
+      request.method = GroebnerMethod::modular;
     }
     request.timeout_seconds = timeout_from(arguments);
-    params = buchberger_params_from(arguments);
+    variant = buchberger_variant_from(arguments);
+    budget = budget_from(arguments);
   } catch (const UsageError& e) {
     return report_usage_error(e.what(), kCommand);
   }
@@ -82,7 +78,7 @@ int run_groebner_command(std::span<const std::string> args) {
   }
 
   return run_reporting_errors(report, [&] {
-    const auto answer = compute_charging(params.budget, [&] { return answer_groebner_request(request, params); });
+    const auto answer = compute_charging(budget, [&] { return answer_groebner_request(request, budget, variant); });
     if (report.json) {
       std::cout << encode_groebner_response(answer) << '\n';
     } else {

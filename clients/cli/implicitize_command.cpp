@@ -6,13 +6,13 @@
 
 #include "arguments.hpp"
 #include "buchberger_flags.hpp"
+#include "choice_flag.hpp"
 #include "error_report.hpp"
 #include "help.hpp"
-#include "implicitizer/codec/implicitize_request.hpp"
-#include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/codec/implicitize_json.hpp"
 #include "implicitizer/core/budget.hpp"
-#include "implicitizer/core/errors.hpp"
 #include "implicitizer/polynomial/printer.hpp"
+#include "implicitizer/service/implicitize_request.hpp"
 
 namespace implicitizer::cli {
 namespace {
@@ -26,22 +26,12 @@ std::vector<OptionSpec> option_specs() {
   return spec;
 }
 
-// The method is checked before anything is computed: an unknown method is a usage
-// error (exit 2), whatever the expressions are.
-void check_method(const std::string& method, bool json) {
-  try {
-    (void)parse_implicitization_method(method);
-  } catch (const InputError& e) {
-    if (json) std::cout << encode_error(e.in_field("method")) << '\n';
-    throw UsageError(e.what());
-  }
-}
-
 }  // namespace
 
 int run_implicitize_command(std::span<const std::string> args) {
   ImplicitizeRequest request;
-  BuchbergerParams params;
+  Budget budget;
+  BuchbergerVariant variant;
   ErrorReport report;
   try {
     const std::vector<OptionSpec> spec = option_specs();
@@ -65,11 +55,15 @@ int run_implicitize_command(std::span<const std::string> args) {
       request.parameters = split_list(*params_text, "params");
       report.field_texts["parameters"] = *params_text;
     }
-    if (const auto method = arguments.value("method")) request.method = *method;
+    // The method is checked before anything is computed: an unknown method is a
+    // usage error (status 2), whatever the expressions are.
+    if (const auto method = read_choice(arguments, "method", parse_implicitization_method, report.json)) {
+      request.method = *method;
+    }
     request.modular = arguments.has("modular");
-    check_method(request.method, report.json);
     request.timeout_seconds = timeout_from(arguments);
-    params = buchberger_params_from(arguments);
+    variant = buchberger_variant_from(arguments);
+    budget = budget_from(arguments);
   } catch (const UsageError& e) {
     return report_usage_error(e.what(), kCommand);
   }
@@ -78,7 +72,7 @@ int run_implicitize_command(std::span<const std::string> args) {
   if (request.z) report.field_texts["z"] = *request.z;
 
   return run_reporting_errors(report, [&] {
-    const auto answer = compute_charging(params.budget, [&] { return answer_implicitize_request(request, params); });
+    const auto answer = compute_charging(budget, [&] { return answer_implicitize_request(request, budget, variant); });
     if (report.json) {
       std::cout << encode_implicitize_response(answer) << '\n';
     } else {

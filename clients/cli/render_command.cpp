@@ -11,11 +11,12 @@
 #include <tuple>
 
 #include "arguments.hpp"
+#include "choice_flag.hpp"
 #include "error_report.hpp"
 #include "help.hpp"
-#include "implicitizer/codec/json_codec.hpp"
-#include "implicitizer/codec/render_request.hpp"
+#include "implicitizer/codec/render_json.hpp"
 #include "implicitizer/codec/scene_json.hpp"
+#include "implicitizer/service/render_request.hpp"
 
 namespace implicitizer::cli {
 namespace {
@@ -51,13 +52,102 @@ std::array<double, 3> parse_point(const std::string& text, const char* flag) {
   return p;
 }
 
+// What the flags say, before the scene file and --method are parsed (their errors
+// are invalid input, status 3, as over HTTP, not usage errors).
+struct RenderCommand {
+  RenderRequest request;
+  std::optional<std::string> scene_text;   // the --scene file's contents
+  std::optional<std::string> method_text;  // --method
+  std::string output;
+  std::size_t threads = 0;
+};
+
+// --implicit, --x --y --z [--params], or --scene: exactly one surface.
+void read_surface_flags(const Arguments& arguments, RenderCommand& command) {
+  const auto implicit = arguments.value("implicit");
+  const auto scene = arguments.value("scene");
+  const bool parametric = arguments.has("x") || arguments.has("y") || arguments.has("z");
+  if ((implicit ? 1 : 0) + (scene ? 1 : 0) + (parametric ? 1 : 0) != 1) {
+    throw UsageError("give exactly one of --implicit E, --x E --y E --z E, or --scene FILE.json");
+  }
+  if (implicit) command.request.implicit = *implicit;
+  if (scene) command.scene_text = read_text_file(*scene);
+  if (parametric) {
+    if (!arguments.has("x") || !arguments.has("y") || !arguments.has("z")) {
+      throw UsageError("a parametric surface needs --x, --y and --z");
+    }
+    command.request.parametric =
+        std::array<std::string, 3>{*arguments.value("x"), *arguments.value("y"), *arguments.value("z")};
+    if (const auto params = arguments.value("params")) command.request.parameters = split_list(*params, "params");
+  } else if (arguments.has("params")) {
+    throw UsageError("--params goes with --x --y --z");
+  }
+}
+
+// Everything but the surface: how to draw it and where to write it.
+void read_drawing_flags(const Arguments& arguments, bool json, RenderCommand& command) {
+  RenderRequest& request = command.request;
+  command.method_text = arguments.value("method");
+  if (const auto mode = read_choice(arguments, "mode", parse_sdf_mode, json)) request.mode = *mode;
+  if (const auto size = arguments.value("size")) std::tie(request.width, request.height) = parse_size(*size);
+  if (const auto aa = arguments.value("aa")) {
+    const std::size_t n = parse_count(*aa, "aa");
+    if (n < 1 || n > 8) throw UsageError("--aa must be 1 to 8");
+    request.antialiasing = static_cast<std::uint32_t>(n);
+  }
+  if (const auto eye = arguments.value("eye")) request.eye = parse_point(*eye, "eye");
+  if (const auto target = arguments.value("target")) request.target = parse_point(*target, "target");
+  if (const auto box = arguments.value("box")) request.box = split_list(*box, "box");
+  if (const auto precision = read_choice(arguments, "precision", parse_evaluation_precision, json)) {
+    request.precision = *precision;
+  }
+  if (const auto t = arguments.value("threads")) command.threads = parse_count(*t, "threads");
+  if (const auto timeout = arguments.value("timeout")) request.timeout_seconds = parse_seconds(*timeout, "timeout");
+  const auto out = arguments.value("output");
+  if (!out) throw UsageError("missing -o FILE.png (where to write the image)");
+  command.output = *out;
+}
+
+// The texts behind the request's fields, for the caret under an error.
+void note_field_texts(const RenderCommand& command, ErrorReport& report) {
+  if (command.scene_text) {
+    report.field_texts["scene"] = *command.scene_text;
+  } else if (command.request.parametric) {
+    report.field_texts["x"] = (*command.request.parametric)[0];
+    report.field_texts["y"] = (*command.request.parametric)[1];
+    report.field_texts["z"] = (*command.request.parametric)[2];
+  } else {
+    report.field_texts["implicit"] = command.request.implicit;
+  }
+}
+
+// Renders, writes the PNG and reports; returns kExitUsage when the file cannot be written.
+int render_and_write(RenderCommand& command, bool json) {
+  RenderRequest& request = command.request;
+  if (command.scene_text) request.scene = parse_scene_json(*command.scene_text, "scene");
+  if (command.method_text) request.method = parse_march_method(*command.method_text);
+  const RenderAnswer answer = answer_render_request(request, Budget(), RenderRequestParams{}, command.threads);
+  std::ofstream file(command.output, std::ios::binary | std::ios::trunc);
+  file.write(answer.png.data(), static_cast<std::streamsize>(answer.png.size()));
+  file.close();
+  if (!file) {
+    std::cerr << "error: cannot write '" << command.output << "'\n";
+    return kExitUsage;
+  }
+  if (json) {
+    std::cout << encode_render_response(answer, false) << '\n';
+  } else {
+    std::cerr << "wrote " << command.output << " (" << answer.stats.width << "x" << answer.stats.height << ", "
+              << answer.stats.hits << " of " << answer.stats.rays << " rays hit, " << answer.stats.mean_evaluations()
+              << " evaluations per ray, " << answer.stats.elapsed_ms << " ms)\n";
+  }
+  return kExitOk;
+}
+
 }  // namespace
 
 int run_render_command(std::span<const std::string> args) {
-  RenderRequest request;
-  std::optional<std::string> scene_text;  // the --scene file's contents
-  std::string output;
-  std::size_t threads = 0;
+  RenderCommand command;
   ErrorReport report;
   try {
     // `-o FILE` is the contract's spelling; the parser only knows `--` options.
@@ -72,83 +162,15 @@ int run_render_command(std::span<const std::string> args) {
     }
     report.json = arguments.has("json");
     if (!arguments.positionals().empty()) throw UsageError("unexpected argument '" + arguments.positionals()[0] + "'");
-    const auto implicit = arguments.value("implicit");
-    const auto scene = arguments.value("scene");
-    const bool parametric = arguments.has("x") || arguments.has("y") || arguments.has("z");
-    if ((implicit ? 1 : 0) + (scene ? 1 : 0) + (parametric ? 1 : 0) != 1) {
-      throw UsageError("give exactly one of --implicit E, --x E --y E --z E, or --scene FILE.json");
-    }
-    if (implicit) request.implicit = *implicit;
-    if (scene) scene_text = read_text_file(*scene);
-    if (parametric) {
-      if (!arguments.has("x") || !arguments.has("y") || !arguments.has("z")) {
-        throw UsageError("a parametric surface needs --x, --y and --z");
-      }
-      request.parametric =
-          std::array<std::string, 3>{*arguments.value("x"), *arguments.value("y"), *arguments.value("z")};
-      if (const auto params = arguments.value("params")) request.parameters = split_list(*params, "params");
-    } else if (arguments.has("params")) {
-      throw UsageError("--params goes with --x --y --z");
-    }
-    if (const auto method = arguments.value("method")) request.method = *method;
-    if (const auto mode = arguments.value("mode")) {
-      if (*mode != "fast" && *mode != "safe")
-        throw UsageError("unknown --mode '" + *mode + "' (expected fast or safe)");
-      request.mode = *mode;
-    }
-    if (const auto size = arguments.value("size")) std::tie(request.width, request.height) = parse_size(*size);
-    if (const auto aa = arguments.value("aa")) {
-      const std::size_t n = parse_count(*aa, "aa");
-      if (n < 1 || n > 8) throw UsageError("--aa must be 1 to 8");
-      request.antialiasing = static_cast<std::uint32_t>(n);
-    }
-    if (const auto eye = arguments.value("eye")) request.eye = parse_point(*eye, "eye");
-    if (const auto target = arguments.value("target")) request.target = parse_point(*target, "target");
-    if (const auto box = arguments.value("box")) request.box = split_list(*box, "box");
-    if (const auto precision = arguments.value("precision")) {
-      if (*precision != "float" && *precision != "double") {
-        throw UsageError("unknown --precision '" + *precision + "' (expected float or double)");
-      }
-      request.precision = *precision;
-    }
-    if (const auto t = arguments.value("threads")) threads = parse_count(*t, "threads");
-    if (const auto timeout = arguments.value("timeout")) request.timeout_seconds = parse_seconds(*timeout, "timeout");
-    const auto out = arguments.value("output");
-    if (!out) throw UsageError("missing -o FILE.png (where to write the image)");
-    output = *out;
+    read_surface_flags(arguments, command);
+    read_drawing_flags(arguments, report.json, command);
   } catch (const UsageError& e) {
     return report_usage_error(e.what(), kCommand);
   }
-  if (scene_text) {
-    report.field_texts["scene"] = *scene_text;
-  } else if (request.parametric) {
-    report.field_texts["x"] = (*request.parametric)[0];
-    report.field_texts["y"] = (*request.parametric)[1];
-    report.field_texts["z"] = (*request.parametric)[2];
-  } else {
-    report.field_texts["implicit"] = request.implicit;
-  }
+  note_field_texts(command, report);
 
   int status = kExitOk;
-  const int answered = run_reporting_errors(report, [&] {
-    if (scene_text) request.scene = parse_scene_json(*scene_text, "scene");
-    const RenderAnswer answer = answer_render_request(request, Budget(), RenderRequestParams{}, threads);
-    std::ofstream file(output, std::ios::binary | std::ios::trunc);
-    file.write(answer.png.data(), static_cast<std::streamsize>(answer.png.size()));
-    file.close();
-    if (!file) {
-      std::cerr << "error: cannot write '" << output << "'\n";
-      status = kExitUsage;
-      return;
-    }
-    if (report.json) {
-      std::cout << encode_render_response(answer, false) << '\n';
-    } else {
-      std::cerr << "wrote " << output << " (" << answer.stats.width << "x" << answer.stats.height << ", "
-                << answer.stats.hits << " of " << answer.stats.rays << " rays hit, " << answer.stats.mean_evaluations()
-                << " evaluations per ray, " << answer.stats.elapsed_ms << " ms)\n";
-    }
-  });
+  const int answered = run_reporting_errors(report, [&] { status = render_and_write(command, report.json); });
   return answered != kExitOk ? answered : status;
 }
 

@@ -7,10 +7,10 @@
 #include "buchberger_flags.hpp"
 #include "error_report.hpp"
 #include "help.hpp"
-#include "implicitizer/codec/json_codec.hpp"
-#include "implicitizer/codec/resultant_request.hpp"
+#include "implicitizer/codec/resultant_json.hpp"
 #include "implicitizer/core/budget.hpp"
 #include "implicitizer/polynomial/printer.hpp"
+#include "implicitizer/service/resultant_request.hpp"
 
 namespace implicitizer::cli {
 namespace {
@@ -44,10 +44,7 @@ int run_resultant_command(std::span<const std::string> args) {
                        std::to_string(request.polynomials.size()));
     }
     request.timeout_seconds = timeout_from(arguments);
-    if (const auto terms = arguments.value("max-terms")) budget.set_max_terms(parse_count(*terms, "max-terms"));
-    if (const auto memory = arguments.value("max-memory")) {
-      budget.set_max_memory(parse_memory_size(*memory, "max-memory"));
-    }
+    budget = budget_from(arguments);
   } catch (const UsageError& e) {
     return report_usage_error(e.what(), kCommand);
   }

@@ -6,11 +6,12 @@
 #include <sstream>
 
 #include "arguments.hpp"
+#include "choice_flag.hpp"
 #include "error_report.hpp"
 #include "help.hpp"
-#include "implicitizer/codec/json_codec.hpp"
 #include "implicitizer/codec/scene_json.hpp"
-#include "implicitizer/codec/sdf_request.hpp"
+#include "implicitizer/codec/sdf_json.hpp"
+#include "implicitizer/service/sdf_request.hpp"
 
 namespace implicitizer::cli {
 namespace {
@@ -33,10 +34,7 @@ int run_sdf_command(std::span<const std::string> args) {
       return kExitOk;
     }
     report.json = arguments.has("json");
-    if (const auto mode = arguments.value("mode")) {
-      if (*mode != "fast" && *mode != "safe") throw UsageError("unknown --mode '" + *mode + "' (expected fast or safe)");
-      request.mode = *mode;
-    }
+    if (const auto mode = read_choice(arguments, "mode", parse_sdf_mode, report.json)) request.mode = *mode;
     if (!arguments.positionals().empty()) throw UsageError("unexpected argument '" + arguments.positionals()[0] + "'");
     const auto implicit = arguments.value("implicit");
     const auto scene = arguments.value("scene");

@@ -3,7 +3,7 @@
 #include <iostream>
 #include <string>
 
-#include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/codec/server_json.hpp"
 
 namespace implicitizer::server {
 

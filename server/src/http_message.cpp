@@ -1,6 +1,6 @@
 #include "http_message.hpp"
 
-#include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/codec/error_json.hpp"
 #include "implicitizer/core/errors.hpp"
 
 namespace implicitizer::server {

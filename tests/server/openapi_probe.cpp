@@ -13,7 +13,11 @@
 #include <string>
 #include <string_view>
 
-#include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/codec/groebner_json.hpp"
+#include "implicitizer/codec/implicitize_json.hpp"
+#include "implicitizer/codec/render_json.hpp"
+#include "implicitizer/codec/resultant_json.hpp"
+#include "implicitizer/codec/sdf_json.hpp"
 #include "router.hpp"
 
 namespace {

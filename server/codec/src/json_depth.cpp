@@ -1,4 +1,4 @@
-#include "implicitizer/codec/json_depth.hpp"
+#include "json_depth.hpp"
 
 #include <string>
 

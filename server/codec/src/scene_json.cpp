@@ -1,7 +1,6 @@
 #include "implicitizer/codec/scene_json.hpp"
 
 #include <rapidjson/document.h>
-#include <rapidjson/error/en.h>
 #include <rapidjson/stringbuffer.h>
 #include <rapidjson/writer.h>
 
@@ -10,10 +9,11 @@
 #include <cmath>
 #include <set>
 
-#include "implicitizer/codec/json_depth.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 #include "implicitizer/polynomial/parser.hpp"
+#include "json_reader.hpp"
+#include "scene_value.hpp"
 
 namespace implicitizer {
 namespace {
@@ -101,25 +101,19 @@ ParameterValue read_parameter(const rapidjson::Value& v, const ParameterSpec& sp
                                      read_number(v[2], field + "[2]")});
 }
 
-class SceneDecoder {
- public:
-  SceneNode decode(const rapidjson::Value& value, const std::string& path, std::size_t depth);
+// "type, name, uniforms, ..." : the keys a node of `info`'s kind may have.
+std::string allowed_keys(const NodeKindInfo& info) {
+  std::string allowed = "type, name, uniforms";
+  if (info.arity == NodeArity::nary) allowed += ", children";
+  if (info.arity == NodeArity::unary) allowed += ", child";
+  if (info.kind == NodeKind::implicit) allowed += ", equation, box";
+  if (info.kind == NodeKind::parametric) allowed += ", x, y, z, parameters, domain, box";
+  for (const ParameterSpec& p : info.parameters) allowed += ", " + std::string(p.name);
+  return allowed;
+}
 
- private:
-  std::size_t nodes_ = 0;
-};
-
-SceneNode SceneDecoder::decode(const rapidjson::Value& value, const std::string& path, std::size_t depth) {
-  // Counted before reading the children, so neither count nor depth can grow past
-  // the limits however the text is shaped.
-  if (++nodes_ > kMaxSceneNodes) {
-    throw InputError("scene_too_large", "a scene has at most " + std::to_string(kMaxSceneNodes) + " nodes")
-        .in_field(path);
-  }
-  if (depth > kMaxSceneDepth) {
-    throw InputError("scene_too_large", "a scene is at most " + std::to_string(kMaxSceneDepth) + " levels deep")
-        .in_field(path);
-  }
+// The kind named by the node's "type", after its keys were found distinct.
+const NodeKindInfo& kind_of(const rapidjson::Value& value, const std::string& path) {
   if (!value.IsObject()) throw invalid_scene("a scene node is a JSON object with a \"type\"", path);
   std::set<std::string> keys;
   for (auto m = value.MemberBegin(); m != value.MemberEnd(); ++m) {
@@ -136,64 +130,22 @@ SceneNode SceneDecoder::decode(const rapidjson::Value& value, const std::string&
     throw InputError("unknown_node_type", "unknown node type '" + type_name + "' (known: " + known + ")")
         .in_field(path + ".type");
   }
+  return *info;
+}
 
-  SceneNode node;
-  node.kind = info->kind;
-  const bool implicit = info->kind == NodeKind::implicit, parametric = info->kind == NodeKind::parametric;
-  for (auto m = value.MemberBegin(); m != value.MemberEnd(); ++m) {
-    const std::string key(m->name.GetString(), m->name.GetStringLength());
-    const std::string field = path + "." + key;
-    const rapidjson::Value& v = m->value;
-    if (key == "type") continue;
-    if (key == "name") {
-      node.name = read_string(v, field, "invalid_name");
-    } else if (key == "uniforms") {
-      node.uniforms = read_strings(v, field);
-    } else if (key == "children" && info->arity == NodeArity::nary) {
-      if (!v.IsArray()) throw invalid_scene("\"children\" is an array of nodes", field);
-      for (rapidjson::SizeType i = 0; i < v.Size(); ++i) {
-        node.children.push_back(decode(v[i], field + "[" + std::to_string(i) + "]", depth + 1));
-      }
-    } else if (key == "child" && info->arity == NodeArity::unary) {
-      node.children.push_back(decode(v, field, depth + 1));
-    } else if (implicit && key == "equation") {
-      node.leaf.equation = read_string(v, field);
-    } else if (parametric && (key == "x" || key == "y" || key == "z")) {
-      node.leaf.coordinates[static_cast<std::size_t>(key[0] - 'x')] = read_string(v, field);
-    } else if (parametric && key == "parameters") {
-      node.leaf.parameter_names = read_strings(v, field);
-    } else if (parametric && key == "domain") {
-      node.leaf.domain = read_domain(v, field);
-    } else if ((implicit || parametric) && key == "box") {
-      node.leaf.box = read_box(v, field);
-    } else {
-      const ParameterSpec* spec = nullptr;
-      for (const ParameterSpec& p : info->parameters) {
-        if (p.name == key) spec = &p;
-      }
-      if (spec == nullptr) {
-        std::string allowed = "type, name, uniforms";
-        if (info->arity == NodeArity::nary) allowed += ", children";
-        if (info->arity == NodeArity::unary) allowed += ", child";
-        if (implicit) allowed += ", equation, box";
-        if (parametric) allowed += ", x, y, z, parameters, domain, box";
-        for (const ParameterSpec& p : info->parameters) allowed += ", " + std::string(p.name);
-        throw invalid_scene("a " + type_name + " has no key '" + key + "' (allowed: " + allowed + ")", field);
-      }
-      node.parameters.emplace_back(key, read_parameter(v, *spec, field));
-    }
-  }
-  // Required fields the table does not list.
-  if (info->arity == NodeArity::nary && !value.HasMember("children")) {
+// Required members the kind table does not list.
+void check_required_members(const rapidjson::Value& value, const NodeKindInfo& info, const std::string& path) {
+  const std::string type_name(info.type_name);
+  if (info.arity == NodeArity::nary && !value.HasMember("children")) {
     throw InputError("missing_parameter", "a " + type_name + " needs \"children\"").in_field(path + ".children");
   }
-  if (info->arity == NodeArity::unary && !value.HasMember("child")) {
+  if (info.arity == NodeArity::unary && !value.HasMember("child")) {
     throw InputError("missing_parameter", "a " + type_name + " needs \"child\"").in_field(path + ".child");
   }
-  if (implicit && !value.HasMember("equation")) {
+  if (info.kind == NodeKind::implicit && !value.HasMember("equation")) {
     throw InputError("missing_parameter", "an implicit leaf needs \"equation\"").in_field(path + ".equation");
   }
-  if (parametric) {
+  if (info.kind == NodeKind::parametric) {
     for (const char* axis : {"x", "y", "z"}) {
       if (!value.HasMember(axis)) {
         throw InputError("missing_parameter", std::string("a parametric leaf needs \"") + axis + "\"")
@@ -201,7 +153,78 @@ SceneNode SceneDecoder::decode(const rapidjson::Value& value, const std::string&
       }
     }
   }
+}
+
+class SceneDecoder {
+ public:
+  SceneNode decode(const rapidjson::Value& value, const std::string& path, std::size_t depth);
+
+ private:
+  // Reads the member `key` (not "type") of a node of kind `info` into `node`.
+  void read_member(const std::string& key, const rapidjson::Value& v, const NodeKindInfo& info,
+                   const std::string& field, std::size_t depth, SceneNode& node);
+
+  std::size_t nodes_ = 0;
+};
+
+SceneNode SceneDecoder::decode(const rapidjson::Value& value, const std::string& path, std::size_t depth) {
+  // Counted before reading the children, so neither count nor depth can grow past
+  // the limits however the text is shaped.
+  if (++nodes_ > kMaxSceneNodes) {
+    throw InputError("scene_too_large", "a scene has at most " + std::to_string(kMaxSceneNodes) + " nodes")
+        .in_field(path);
+  }
+  if (depth > kMaxSceneDepth) {
+    throw InputError("scene_too_large", "a scene is at most " + std::to_string(kMaxSceneDepth) + " levels deep")
+        .in_field(path);
+  }
+  const NodeKindInfo& info = kind_of(value, path);
+  SceneNode node;
+  node.kind = info.kind;
+  for (auto m = value.MemberBegin(); m != value.MemberEnd(); ++m) {
+    const std::string key(m->name.GetString(), m->name.GetStringLength());
+    if (key != "type") read_member(key, m->value, info, path + "." + key, depth, node);
+  }
+  check_required_members(value, info, path);
   return node;
+}
+
+void SceneDecoder::read_member(const std::string& key, const rapidjson::Value& v, const NodeKindInfo& info,
+                               const std::string& field, std::size_t depth, SceneNode& node) {
+  const bool implicit = info.kind == NodeKind::implicit, parametric = info.kind == NodeKind::parametric;
+  if (key == "name") {
+    node.name = read_string(v, field, "invalid_name");
+  } else if (key == "uniforms") {
+    node.uniforms = read_strings(v, field);
+  } else if (key == "children" && info.arity == NodeArity::nary) {
+    if (!v.IsArray()) throw invalid_scene("\"children\" is an array of nodes", field);
+    for (rapidjson::SizeType i = 0; i < v.Size(); ++i) {
+      node.children.push_back(decode(v[i], field + "[" + std::to_string(i) + "]", depth + 1));
+    }
+  } else if (key == "child" && info.arity == NodeArity::unary) {
+    node.children.push_back(decode(v, field, depth + 1));
+  } else if (implicit && key == "equation") {
+    node.leaf.equation = read_string(v, field);
+  } else if (parametric && (key == "x" || key == "y" || key == "z")) {
+    node.leaf.coordinates[static_cast<std::size_t>(key[0] - 'x')] = read_string(v, field);
+  } else if (parametric && key == "parameters") {
+    node.leaf.parameter_names = read_strings(v, field);
+  } else if (parametric && key == "domain") {
+    node.leaf.domain = read_domain(v, field);
+  } else if ((implicit || parametric) && key == "box") {
+    node.leaf.box = read_box(v, field);
+  } else {
+    const ParameterSpec* spec = nullptr;
+    for (const ParameterSpec& p : info.parameters) {
+      if (p.name == key) spec = &p;
+    }
+    if (spec == nullptr) {
+      throw invalid_scene(
+          "a " + std::string(info.type_name) + " has no key '" + key + "' (allowed: " + allowed_keys(info) + ")",
+          field);
+    }
+    node.parameters.emplace_back(key, read_parameter(v, *spec, field));
+  }
 }
 
 }  // namespace
@@ -211,15 +234,7 @@ SceneNode decode_scene(const rapidjson::Value& value, const std::string& path) {
 }
 
 SceneNode parse_scene_json(std::string_view text, const std::string& path) {
-  check_json_depth(text, kMaxSceneJsonDepth);
-  rapidjson::Document document;
-  document.Parse<rapidjson::kParseIterativeFlag | rapidjson::kParseValidateEncodingFlag>(text.data(), text.size());
-  if (document.HasParseError()) {
-    throw InputError("invalid_json",
-                     std::string("invalid JSON: ") + rapidjson::GetParseError_En(document.GetParseError()),
-                     document.GetErrorOffset());
-  }
-  return decode_scene(document, path);
+  return decode_scene(json::parse_json(text, kMaxSceneJsonDepth), path);
 }
 
 namespace {
@@ -246,27 +261,8 @@ void write_parameter(SceneWriter& w, const Vec3<double>& value, bool is_vector) 
 // Exact numbers as exact strings ("1/3"): read_exact() reads them back unchanged.
 void write_exact(SceneWriter& w, const Rational& q) { write_text(w, to_string(q)); }
 
-void write_node(SceneWriter& w, const SceneNode& node) {
-  w.StartObject();
-  w.Key("type");
-  const std::string_view type = node_kind_info(node.kind).type_name;
-  w.String(type.data(), static_cast<rapidjson::SizeType>(type.size()));
-  auto parameters = node.parameters;
-  std::sort(parameters.begin(), parameters.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (const auto& [key, value] : parameters) {
-    write_text(w, key);
-    write_parameter(w, value.value, value.is_vector);
-  }
-  if (!node.name.empty()) {
-    w.Key("name");
-    write_text(w, node.name);
-  }
-  if (!node.uniforms.empty()) {
-    w.Key("uniforms");
-    w.StartArray();
-    for (const std::string& u : node.uniforms) write_text(w, u);
-    w.EndArray();
-  }
+// The members of a leaf: the equation, or x, y, z, parameters and domain; its box.
+void write_leaf_members(SceneWriter& w, const SceneNode& node) {
   if (node.kind == NodeKind::implicit) {
     w.Key("equation");
     write_text(w, node.leaf.equation);
@@ -302,6 +298,30 @@ void write_node(SceneWriter& w, const SceneNode& node) {
     for (const Rational& q : node.leaf.box->hi) write_exact(w, q);
     w.EndArray();
   }
+}
+
+void write_node(SceneWriter& w, const SceneNode& node) {
+  w.StartObject();
+  w.Key("type");
+  const std::string_view type = node_kind_info(node.kind).type_name;
+  w.String(type.data(), static_cast<rapidjson::SizeType>(type.size()));
+  auto parameters = node.parameters;
+  std::sort(parameters.begin(), parameters.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [key, value] : parameters) {
+    write_text(w, key);
+    write_parameter(w, value.value, value.is_vector);
+  }
+  if (!node.name.empty()) {
+    w.Key("name");
+    write_text(w, node.name);
+  }
+  if (!node.uniforms.empty()) {
+    w.Key("uniforms");
+    w.StartArray();
+    for (const std::string& u : node.uniforms) write_text(w, u);
+    w.EndArray();
+  }
+  write_leaf_members(w, node);
   const NodeArity arity = node_kind_info(node.kind).arity;
   if (arity == NodeArity::unary && node.children.size() == 1) {
     w.Key("child");

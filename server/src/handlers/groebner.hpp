@@ -5,7 +5,7 @@
 #include <string>
 
 #include "handlers/handler.hpp"
-#include "implicitizer/codec/groebner_request.hpp"
+#include "implicitizer/service/groebner_request.hpp"
 
 namespace implicitizer::server {
 

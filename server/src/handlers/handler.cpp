@@ -1,6 +1,14 @@
 #include "handlers/handler.hpp"
 
+#include "implicitizer/codec/error_json.hpp"
+
 namespace implicitizer::server {
+
+Response make_refusal_response(const InputError& error) {
+  const http::status status =
+      error.code() == "render_too_large" ? http::status::payload_too_large : http::status::bad_request;
+  return make_json_response(status, encode_error(error));
+}
 
 Budget make_computation_budget(const std::optional<double>& requested_seconds, const ServerConfig& config) {
   const double cap = std::chrono::duration<double>(config.max_timeout).count();

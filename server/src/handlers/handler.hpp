@@ -14,8 +14,9 @@
 
 #include "config.hpp"
 #include "http_message.hpp"
+#include "implicitizer/codec/json_params.hpp"
 #include "implicitizer/core/budget.hpp"
-#include "implicitizer/groebner/buchberger.hpp"
+#include "implicitizer/core/errors.hpp"
 #include "metrics_registry.hpp"
 #include "result_cache.hpp"
 
@@ -72,9 +73,30 @@ inline void append_key_list(std::string& key, const std::optional<std::vector<T>
 /// limit of `config`. Its deadline starts now, so time spent queued counts.
 Budget make_computation_budget(const std::optional<double>& requested_seconds, const ServerConfig& config);
 
-/// The shape every algebra endpoint shares: the cached body for `key` if there is
-/// one (`X-Cache: hit`), else a Computation that runs `answer(decoded, params)` on a
-/// worker under a budget for the request's timeout, caches the body it returns and
+/// The response to a body the decoder (or a check before queuing) refused: 413 for
+/// `render_too_large` (a render larger than the server draws), 400 for every other
+/// InputError, with the error's code, field and position.
+Response make_refusal_response(const InputError& error);
+
+/// The one decode-or-refuse path of the algebra endpoints: `decode(body, limits)` (a
+/// codec's decode_*_request, possibly followed by checks that must answer before any
+/// work is queued) under the configured nesting limit, then `handle(decoded)`; an
+/// InputError of `decode` is answered by make_refusal_response().
+template <typename Decode, typename Handle>
+HandlerResult handle_decoded(const Request& request, const HandlerContext& context, Decode decode, Handle handle) {
+  using Decoded = decltype(decode(request.body(), JsonParams{}));
+  std::optional<Decoded> decoded;
+  try {
+    decoded.emplace(decode(request.body(), JsonParams{context.config.json_max_depth}));
+  } catch (const InputError& e) {
+    return make_refusal_response(e);
+  }
+  return handle(std::move(*decoded));
+}
+
+/// The shape every cached algebra endpoint shares: the cached body for `key` if there
+/// is one (`X-Cache: hit`), else a Computation that runs `answer(decoded, budget)` on
+/// a worker under a budget for the request's timeout, caches the body it returns and
 /// answers it (`X-Cache: miss`). `answer` returns the encoded JSON body.
 template <typename Request, typename Answer>
 HandlerResult cached_computation(Request decoded, std::string key, const HandlerContext& context, Answer answer) {
@@ -90,9 +112,7 @@ HandlerResult cached_computation(Request decoded, std::string key, const Handler
   decoded.timeout_seconds.reset();
   computation.run = [decoded = std::move(decoded), key = std::move(key), budget = computation.budget,
                      cache = &context.cache, answer = std::move(answer)]() {
-    BuchbergerParams params;
-    params.budget = budget;
-    std::string body = answer(decoded, params);
+    std::string body = answer(decoded, budget);
     cache->insert(key, body);
     Response response = make_json_response(http::status::ok, std::move(body));
     response.set("X-Cache", "miss");

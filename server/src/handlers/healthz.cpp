@@ -1,6 +1,6 @@
 #include "handlers/healthz.hpp"
 
-#include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/codec/server_json.hpp"
 
 namespace implicitizer::server {
 

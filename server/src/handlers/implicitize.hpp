@@ -5,7 +5,7 @@
 #include <string>
 
 #include "handlers/handler.hpp"
-#include "implicitizer/codec/implicitize_request.hpp"
+#include "implicitizer/service/implicitize_request.hpp"
 
 namespace implicitizer::server {
 

@@ -2,7 +2,8 @@
 
 #include <cstdio>
 
-#include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/codec/render_json.hpp"
+#include "implicitizer/service/render_request.hpp"
 
 namespace implicitizer::server {
 namespace {
@@ -19,8 +20,8 @@ Response make_png_response(const RenderAnswer& answer) {
   response.set("X-Render-Width", std::to_string(s.width));
   response.set("X-Render-Height", std::to_string(s.height));
   response.set("X-Render-Method", to_string(s.method));
-  response.set("X-Render-Mode", s.mode == SdfMode::safe ? "safe" : "fast");
-  response.set("X-Render-Precision", answer.precision);
+  response.set("X-Render-Mode", to_string(s.mode));
+  response.set("X-Render-Precision", to_string(answer.precision));
   response.set("X-Render-Rays", std::to_string(s.rays));
   response.set("X-Render-Hits", std::to_string(s.hits));
   response.set("X-Render-Out-Of-Steps", std::to_string(s.out_of_steps));
@@ -33,24 +34,25 @@ Response make_png_response(const RenderAnswer& answer) {
 }  // namespace
 
 HandlerResult handle_render(const Request& request, const HandlerContext& context) {
-  RenderRequest decoded;
-  try {
-    decoded = decode_render_request(request.body(), JsonParams{context.config.json_max_depth});
+  // The size is checked before anything is queued: a render too large is 413 at once.
+  const auto decode_and_check = [](std::string_view body, const JsonParams& limits) {
+    RenderRequest decoded = decode_render_request(body, limits);
     check_render_size(decoded);
-  } catch (const InputError& e) {
-    const http::status status =
-        e.code() == "render_too_large" ? http::status::payload_too_large : http::status::bad_request;
-    return make_json_response(status, encode_error(e));
-  }
-  Computation computation;
-  computation.budget = make_computation_budget(decoded.timeout_seconds, context.config);
-  decoded.timeout_seconds.reset();  // the budget's deadline already counts from now
-  computation.run = [decoded = std::move(decoded), budget = computation.budget]() {
-    const RenderAnswer answer = answer_render_request(decoded, budget, RenderRequestParams{}, 1);
-    if (decoded.format == "json") return make_json_response(http::status::ok, encode_render_response(answer, true));
-    return make_png_response(answer);
+    return decoded;
   };
-  return computation;
+  return handle_decoded(request, context, decode_and_check, [&](RenderRequest decoded) -> HandlerResult {
+    Computation computation;
+    computation.budget = make_computation_budget(decoded.timeout_seconds, context.config);
+    decoded.timeout_seconds.reset();  // the budget's deadline already counts from now
+    computation.run = [decoded = std::move(decoded), budget = computation.budget]() {
+      const RenderAnswer answer = answer_render_request(decoded, budget, RenderRequestParams{}, 1);
+      if (decoded.format == RenderFormat::json) {
+        return make_json_response(http::status::ok, encode_render_response(answer, true));
+      }
+      return make_png_response(answer);
+    };
+    return computation;
+  });
 }
 
 }  // namespace implicitizer::server

@@ -1,6 +1,6 @@
 #include "handlers/resultant.hpp"
 
-#include "implicitizer/codec/json_codec.hpp"
+#include "implicitizer/codec/resultant_json.hpp"
 
 namespace implicitizer::server {
 
@@ -12,17 +12,13 @@ std::string canonical_key(const ResultantRequest& request) {
 }
 
 HandlerResult handle_resultant(const Request& request, const HandlerContext& context) {
-  ResultantRequest decoded;
-  try {
-    decoded = decode_resultant_request(request.body(), JsonParams{context.config.json_max_depth});
-  } catch (const InputError& e) {
-    return make_json_response(http::status::bad_request, encode_error(e));
-  }
-  std::string key = canonical_key(decoded);  // before decoded is moved from
-  return cached_computation(
-      std::move(decoded), std::move(key), context, [](const auto& decoded_request, const BuchbergerParams& params) {
-        return encode_resultant_response(answer_resultant_request(decoded_request, params.budget));
-      });
+  return handle_decoded(request, context, decode_resultant_request, [&](ResultantRequest decoded) {
+    std::string key = canonical_key(decoded);  // before decoded is moved from
+    return cached_computation(std::move(decoded), std::move(key), context,
+                              [](const ResultantRequest& r, const Budget& budget) {
+                                return encode_resultant_response(answer_resultant_request(r, budget));
+                              });
+  });
 }
 
 }  // namespace implicitizer::server

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "handlers/handler.hpp"
-#include "implicitizer/codec/resultant_request.hpp"
+#include "implicitizer/service/resultant_request.hpp"
 
 namespace implicitizer::server {
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "handlers/handler.hpp"
-#include "implicitizer/codec/sdf_request.hpp"
+#include "implicitizer/service/sdf_request.hpp"
 
 namespace implicitizer::server {
 

@@ -21,12 +21,11 @@
 /// uniforms, safety).
 ///
 /// Entry points for the server and the command line:
-///     SceneNode root = decode_scene(document["scene"], "scene");   // inside the codec
 ///     SceneNode root = parse_scene_json(text);                      // a whole JSON text
 ///     CompiledScene scene = compile_scene(root, options, budget);
 ///     std::string uniforms = encode_scene_uniforms(scene.uniforms());        // for the response
-
-#include <rapidjson/fwd.h>
+/// (the request decoders read a scene embedded in a body with the same rules, through
+/// the codec's private scene_value.hpp).
 
 #include <cstddef>
 #include <string>
@@ -43,14 +42,10 @@ namespace implicitizer {
 /// A request decoder that embeds a scene must allow at least this much nesting.
 inline constexpr std::size_t kMaxSceneJsonDepth = 2 * kMaxSceneDepth + 4;
 
-/// Reads the scene node `value` found at JSON path `path` (e.g. "scene"). Throws
-/// InputError as described in the file comment.
-SceneNode decode_scene(const rapidjson::Value& value, const std::string& path);
-
 /// Parses `text` (one JSON object, the scene's root node) and decodes it with path
-/// `path`. Throws InputError `invalid_json` (with the byte offset), `json_too_deep`
-/// (nesting beyond kMaxSceneJsonDepth, refused before parsing), and the errors of
-/// decode_scene().
+/// `path` (errors name "scene.children[1].radius"). Throws InputError `invalid_json`
+/// (with the byte offset), `json_too_deep` (nesting beyond kMaxSceneJsonDepth,
+/// refused before parsing), and those described in the file comment.
 SceneNode parse_scene_json(std::string_view text, const std::string& path = "scene");
 
 /// `root` as compact JSON in a canonical form: keys in a fixed order (parameters

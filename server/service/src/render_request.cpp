@@ -1,6 +1,5 @@
-#include "implicitizer/codec/render_request.hpp"
+#include "implicitizer/service/render_request.hpp"
 
-#include "implicitizer/codec/sdf_request.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 #include "implicitizer/implicitization/parametrization.hpp"
@@ -9,6 +8,7 @@
 #include "implicitizer/render/render_target.hpp"
 #include "implicitizer/sdf/glsl_export.hpp"
 #include "implicitizer/sdf/glsl_name.hpp"
+#include "implicitizer/service/sdf_request.hpp"
 
 namespace implicitizer {
 namespace {
@@ -52,6 +52,22 @@ InputError in_request_field(const InputError& e, const RenderRequest& request) {
 
 }  // namespace
 
+EvaluationPrecision parse_evaluation_precision(const std::string& name) {
+  if (name == "float") return EvaluationPrecision::single;
+  if (name == "double") return EvaluationPrecision::double_run;
+  throw InputError("invalid_value", "precision must be float or double").in_field("precision");
+}
+
+const char* to_string(EvaluationPrecision precision) {
+  return precision == EvaluationPrecision::double_run ? "double" : "float";
+}
+
+RenderFormat parse_render_format(const std::string& name) {
+  if (name == "png") return RenderFormat::png;
+  if (name == "json") return RenderFormat::json;
+  throw InputError("invalid_value", "format must be png or json").in_field("format");
+}
+
 void check_render_size(const RenderRequest& request, const RenderRequestParams& limits) {
   for (const auto& [field, value] : {std::pair{"width", request.width}, std::pair{"height", request.height}}) {
     if (value == 0 || value > limits.max_side) {
@@ -76,23 +92,14 @@ RenderAnswer answer_render_request(const RenderRequest& request, const Budget& c
   Budget budget = caller_budget;
   if (request.timeout_seconds) budget.set_timeout(*request.timeout_seconds);
   check_render_size(request, limits);
-  const SdfMode mode = parse_sdf_mode(request.mode);
-  const MarchMethod method = parse_march_method(request.method);
-  if (request.precision != "float" && request.precision != "double") {
-    throw InputError("invalid_value", "precision must be float or double").in_field("precision");
-  }
-  if (request.format != "png" && request.format != "json") {
-    throw InputError("invalid_value", "format must be png or json").in_field("format");
-  }
   check_glsl_name(request.name);
   const SceneBox box = parse_request_box(request.box, budget);
   make_scene_frame(box);  // validates a box no leaf may read
   const SceneNode root = scene_of(request, budget);
-  const EvaluationPrecision precision =
-      request.precision == "double" ? EvaluationPrecision::double_run : EvaluationPrecision::single;
   RenderTarget target = [&] {
     try {
-      return RenderTarget::compile(root, SceneParams{mode, box, request.name, "scene"}, precision, budget);
+      return RenderTarget::compile(root, SceneParams{request.mode, box, request.name, "scene"}, request.precision,
+                                   budget);
     } catch (const InputError& e) {
       throw in_request_field(e, request);
     }
@@ -102,7 +109,7 @@ RenderAnswer answer_render_request(const RenderRequest& request, const Budget& c
   settings.width = request.width;
   settings.height = request.height;
   settings.antialiasing = request.antialiasing;
-  settings.method = method;
+  settings.method = request.method;
   settings.threads = threads;
   settings.camera = default_camera(target);
   if (request.eye) settings.camera.eye = *request.eye;

@@ -14,15 +14,17 @@
 #include "implicitizer/core/budget.hpp"
 #include "implicitizer/scene/compiled_scene.hpp"
 #include "implicitizer/scene/scene_node.hpp"
+#include "implicitizer/sdf/glsl_export.hpp"
 
 namespace implicitizer {
 
-/// The fields of a request, still as text.
+/// The fields of a request; the surface and the box are still text (exact numbers,
+/// parsed under the budget).
 struct SdfRequest {
   std::string implicit;  ///< F(x, y, z): the surface F = 0 (used when `scene` is absent)
-  /// A scene, already decoded (decode_scene, parse_scene_json); replaces `implicit`.
+  /// A scene, already decoded (parse_scene_json); replaces `implicit`.
   std::optional<SceneNode> scene;
-  std::string mode = "fast";
+  SdfMode mode = SdfMode::fast;
   /// x0, y0, z0, x1, y1, z1 as exact numbers ("0.25", "1e-30", "-3/7"); empty:
   /// the default box [-2, 2]^3.
   std::vector<std::string> box;
@@ -40,15 +42,18 @@ struct SdfLeafSummary {
 
 /// What a request computed.
 struct SdfAnswer {
-  std::string glsl;               ///< the source of `float NAME_sdf(vec3 p)`
-  std::string function;           ///< NAME_sdf
-  std::string mode;               ///< "fast" or "safe"
-  std::array<double, 6> box{};    ///< the box used, rounded to double
-  std::int32_t degree = 0;        ///< total degree of F; for a scene, the largest of its leaves (0: none)
-  std::size_t nodes = 0;          ///< nodes of the scene (0: an implicit surface)
+  std::string glsl;                    ///< the source of `float NAME_sdf(vec3 p)`
+  std::string function;                ///< NAME_sdf
+  SdfMode mode = SdfMode::fast;        ///< the mode of the request
+  std::array<double, 6> box{};         ///< the box used, rounded to double
+  std::int32_t degree = 0;             ///< total degree of F; for a scene, the largest of its leaves (0: none)
+  std::size_t nodes = 0;               ///< nodes of the scene (0: an implicit surface)
   std::vector<SceneUniform> uniforms;  ///< the scene's uniforms, in declaration order
   std::vector<SdfLeafSummary> leaves;  ///< the scene's polynomial leaves
 };
+
+/// "fast" or "safe": the mode's name in requests and answers (parse_sdf_mode reads it).
+const char* to_string(SdfMode mode);
 
 /// The scene box of a request's `box` field: six exact numbers x0, y0, z0, x1, y1,
 /// z1 ("0.25", "1e-30", "-3/7"); empty: SceneBox::default_box(). Throws InputError
@@ -60,11 +65,10 @@ SceneBox parse_request_box(const std::vector<std::string>& box, const Budget& bu
 /// present, replaces). Throws InputError with its field
 /// set: parse errors and `unknown_variable` ("implicit": only x, y, z may occur),
 /// `constant_polynomial` ("implicit"), `degree_too_high` ("implicit": mode safe,
-/// terms beyond fp32's range, see SafeSdf::build), `invalid_value` ("mode": neither
-/// fast nor safe), `invalid_box` ("box": not six numbers, or hi <= lo),
-/// `invalid_name` ("name"); for a scene the errors of compile_scene() (fields are the
-/// node paths "scene.children[1].radius"), with the request's box as the scene box and
-/// its name as the scene's name.
+/// terms beyond fp32's range, see SafeSdf::build), `invalid_box` ("box": not six
+/// numbers, or hi <= lo), `invalid_name` ("name"); for a scene the errors of
+/// compile_scene() (fields are the node paths "scene.children[1].radius"), with the
+/// request's box as the scene box and its name as the scene's name.
 SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& budget = Budget());
 
 }  // namespace implicitizer

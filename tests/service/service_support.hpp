@@ -1,5 +1,5 @@
 #pragma once
-// Shared by the codec tests.
+// Shared by the service and codec tests.
 
 #include <gtest/gtest.h>
 

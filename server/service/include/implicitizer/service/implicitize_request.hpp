@@ -9,13 +9,15 @@
 #include <string>
 #include <vector>
 
+#include "implicitizer/core/budget.hpp"
 #include "implicitizer/groebner/buchberger.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 #include "implicitizer/implicitization/reproduce.hpp"
 
 namespace implicitizer {
 
-/// The fields of a request, still as text: nothing is parsed or validated here.
+/// The fields of a request; the coordinates are still text (parsing them needs the
+/// budget, and their errors carry positions).
 struct ImplicitizeRequest {
   std::string x;  ///< expression for x in the parameters
   std::string y;  ///< expression for y
@@ -23,8 +25,7 @@ struct ImplicitizeRequest {
   std::optional<std::string> z;
   /// Explicit parameter names; absent means "every identifier other than x, y, z".
   std::optional<std::vector<std::string>> parameters;
-  /// `auto`, `groebner`, `resultant` or `interpolation`.
-  std::string method = "auto";
+  ImplicitizationMethod method = ImplicitizationMethod::automatic;
   /// The Gröbner route modulo primes (ImplicitizeParams::modular_groebner).
   bool modular = false;
   /// Wall-time limit in seconds; absent or <= 0 means none (the caller may impose its own).
@@ -38,13 +39,12 @@ struct ImplicitizeAnswer {
   ReproduceScripts reproduce;
 };
 
-/// Answers `request`: parses the method (InputError `unknown_method`, field
-/// "method"), then the parametrization (InputError with field "x", "y", "z" or
-/// "parameters"), then implicitizes with `params` (strategy, criteria, size limit,
-/// cancellation). The request's timeout, when present, replaces the deadline of
-/// `params.budget` and starts counting now. Throws what implicitize() throws:
-/// NoSingleEquation, LimitExceeded.
-ImplicitizeAnswer answer_implicitize_request(const ImplicitizeRequest& request,
-                                             BuchbergerParams params = BuchbergerParams());
+/// Answers `request` under `budget` (the request's timeout, when present, replaces
+/// its deadline and starts counting now, so that parsing counts too), running
+/// Buchberger's algorithm as `variant` says (the command line's --strategy and
+/// --criteria). Throws InputError with field "x", "y", "z" or "parameters" for the
+/// parametrization, and what implicitize() throws: NoSingleEquation, LimitExceeded.
+ImplicitizeAnswer answer_implicitize_request(const ImplicitizeRequest& request, Budget budget = Budget(),
+                                             const BuchbergerVariant& variant = BuchbergerVariant());
 
 }  // namespace implicitizer

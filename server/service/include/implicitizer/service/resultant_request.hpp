@@ -14,7 +14,8 @@
 
 namespace implicitizer {
 
-/// The fields of a request, still as text.
+/// The fields of a request; the polynomials are still text (parsing them needs the
+/// budget, and their errors carry positions).
 struct ResultantRequest {
   std::vector<std::string> polynomials;  ///< F and G: exactly two
   std::string variable;                  ///< the variable to eliminate

@@ -1,4 +1,4 @@
-#include "implicitizer/codec/sdf_request.hpp"
+#include "implicitizer/service/sdf_request.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +43,8 @@ double nearest_double(const Rational& q) {
 
 }  // namespace
 
+const char* to_string(SdfMode mode) { return mode == SdfMode::safe ? "safe" : "fast"; }
+
 SceneBox parse_request_box(const std::vector<std::string>& numbers, const Budget& budget) {
   SceneBox box = SceneBox::default_box();
   if (numbers.empty()) return box;
@@ -58,13 +60,13 @@ SceneBox parse_request_box(const std::vector<std::string>& numbers, const Budget
 SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& caller_budget) {
   Budget budget = caller_budget;
   if (request.timeout_seconds) budget.set_timeout(*request.timeout_seconds);
-  const SdfMode mode = parse_sdf_mode(request.mode);
+  const SdfMode mode = request.mode;
   check_glsl_name(request.name);
   const RingPtr ring = Ring::make({"x", "y", "z"});
   const SceneBox box = parse_request_box(request.box, budget);
   SdfAnswer answer;
   answer.function = request.name + "_sdf";
-  answer.mode = mode == SdfMode::safe ? "safe" : "fast";
+  answer.mode = mode;
   for (std::size_t i = 0; i < 3; ++i) {
     answer.box[i] = nearest_double(box.lo[i]);
     answer.box[i + 3] = nearest_double(box.hi[i]);

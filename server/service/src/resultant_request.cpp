@@ -1,4 +1,4 @@
-#include "implicitizer/codec/resultant_request.hpp"
+#include "implicitizer/service/resultant_request.hpp"
 
 #include <chrono>
 #include <memory>

@@ -1,0 +1,62 @@
+#pragma once
+/// \file
+/// Which algorithm computes a Gröbner basis or an elimination, and the one policy
+/// that chooses between them (`auto`): Buchberger's algorithm over ℚ first, within a
+/// head start measured in work, then the proven modular computation
+/// (modular_groebner.hpp). Buchberger answers the small ideals a user types at once;
+/// the modular route wins on the ones whose coefficients swell (docs/algorithms.md).
+
+#include <optional>
+#include <span>
+#include <string>
+
+#include "implicitizer/groebner/buchberger.hpp"
+#include "implicitizer/groebner/elimination.hpp"
+#include "implicitizer/groebner/modular_groebner.hpp"
+#include "implicitizer/polynomial/monomial_order.hpp"
+
+namespace implicitizer {
+
+/// The algorithms a caller may ask for.
+enum class GroebnerMethod {
+  automatic,   ///< buchberger within kBuchbergerHeadStartMs of work, then modular
+  buchberger,  ///< Buchberger's algorithm over ℚ (buchberger.hpp)
+  modular,     ///< modulo primes, lifted and proven over ℚ (modular_groebner.hpp)
+};
+
+/// How long `auto` lets Buchberger's algorithm over ℚ run before it switches to the
+/// modular computation, in milliseconds of Buchberger's work
+/// (buchberger_work_of_milliseconds: the same allowance on every run, loaded or not;
+/// docs/algorithms.md has the measurements behind it).
+inline constexpr double kBuchbergerHeadStartMs = 100;
+
+/// Parses `auto`, `buchberger` and `modular`; throws InputError `unknown_method`
+/// (field "method") otherwise.
+GroebnerMethod parse_groebner_method(const std::string& name);
+
+/// "auto", "buchberger" or "modular".
+const char* to_string(GroebnerMethod method);
+
+/// What answered a computation by method: `buchberger` or `modular` (never
+/// `automatic`), with the modular computation's counters when it answered.
+struct GroebnerRoute {
+  GroebnerMethod method = GroebnerMethod::buchberger;
+  std::optional<ModularGroebnerStats> modular;
+};
+
+/// The reduced Gröbner basis of `generators` (compute_groebner_basis or
+/// compute_groebner_basis_modular, proven) by `method`. With `automatic` only the
+/// head start's work allowance hands over to the modular route (try_within): the
+/// caller's deadline, memory, term limit and cancellation stop both and propagate.
+/// `route`, if given, says what answered. Throws what the chosen algorithms throw.
+GroebnerResult compute_groebner_basis_by_method(std::span<const Polynomial> generators, GroebnerMethod method,
+                                                const BuchbergerParams& params, GroebnerRoute* route = nullptr);
+
+/// eliminate() or eliminate_modular() by `method`, chosen as in
+/// compute_groebner_basis_by_method().
+EliminationResult eliminate_by_method(std::span<const Polynomial> generators, std::span<const std::string> eliminate,
+                                      GroebnerMethod method, const BuchbergerParams& params,
+                                      const MonomialOrder& remaining_order = MonomialOrder::grevlex(),
+                                      GroebnerRoute* route = nullptr);
+
+}  // namespace implicitizer

@@ -1,0 +1,87 @@
+#include "implicitizer/groebner/groebner_method.hpp"
+
+#include <utility>
+
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/core/try_within.hpp"
+
+namespace implicitizer {
+namespace {
+
+// Runs `buchberger(params)` over ℚ or `modular(modular_params, stats)` modulo primes
+// as `method` says; `auto` gives Buchberger its head start first.
+template <class Buchberger, class Modular>
+auto compute_by_method(GroebnerMethod method, const BuchbergerParams& params, GroebnerRoute* route,
+                       Buchberger buchberger, Modular modular) {
+  GroebnerRoute answered;
+  const auto by_modular = [&] {
+    ModularGroebnerParams modular_params;
+    modular_params.buchberger = params;
+    ModularGroebnerStats stats;
+    auto result = modular(modular_params, stats);
+    answered = {GroebnerMethod::modular, stats};
+    return result;
+  };
+  const auto finish = [&](auto result) {
+    if (route != nullptr) *route = std::move(answered);
+    return result;
+  };
+  if (method == GroebnerMethod::modular) return finish(by_modular());
+  if (method == GroebnerMethod::automatic) {
+    // The caller's own limits (its deadline, memory, cancellation, the term limit)
+    // stop everything; only the head start's work allowance hands over.
+    auto quick =
+        try_within(params.budget, buchberger_work_of_milliseconds(kBuchbergerHeadStartMs), [&](const Budget& trial) {
+          BuchbergerParams limited = params;
+          limited.budget = trial;
+          return buchberger(limited);
+        });
+    if (quick) return finish(std::move(*quick));
+    return finish(by_modular());
+  }
+  return finish(buchberger(params));
+}
+
+}  // namespace
+
+GroebnerMethod parse_groebner_method(const std::string& name) {
+  for (GroebnerMethod m : {GroebnerMethod::automatic, GroebnerMethod::buchberger, GroebnerMethod::modular}) {
+    if (name == to_string(m)) return m;
+  }
+  throw InputError("unknown_method", "unknown method '" + name + "' (expected auto, buchberger or modular)")
+      .in_field("method");
+}
+
+const char* to_string(GroebnerMethod method) {
+  switch (method) {
+    case GroebnerMethod::automatic:
+      return "auto";
+    case GroebnerMethod::buchberger:
+      return "buchberger";
+    case GroebnerMethod::modular:
+      return "modular";
+  }
+  return "auto";
+}
+
+GroebnerResult compute_groebner_basis_by_method(std::span<const Polynomial> generators, GroebnerMethod method,
+                                                const BuchbergerParams& params, GroebnerRoute* route) {
+  return compute_by_method(
+      method, params, route, [&](const BuchbergerParams& p) { return compute_groebner_basis(generators, p); },
+      [&](const ModularGroebnerParams& p, ModularGroebnerStats& stats) {
+        return compute_groebner_basis_modular(generators, p, &stats);
+      });
+}
+
+EliminationResult eliminate_by_method(std::span<const Polynomial> generators, std::span<const std::string> names,
+                                      GroebnerMethod method, const BuchbergerParams& params,
+                                      const MonomialOrder& remaining_order, GroebnerRoute* route) {
+  return compute_by_method(
+      method, params, route,
+      [&](const BuchbergerParams& p) { return eliminate(generators, names, p, remaining_order); },
+      [&](const ModularGroebnerParams& p, ModularGroebnerStats& stats) {
+        return eliminate_modular(generators, names, p, remaining_order, &stats);
+      });
+}
+
+}  // namespace implicitizer

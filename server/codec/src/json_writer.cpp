@@ -1,0 +1,90 @@
+#include "json_writer.hpp"
+
+#include <cmath>
+
+#include "implicitizer/polynomial/printer.hpp"
+
+namespace implicitizer::json {
+
+Writer& configure(Writer& w) {
+  w.SetMaxDecimalPlaces(3);
+  return w;
+}
+
+void write_string(Writer& w, std::string_view s) { w.String(s.data(), static_cast<rapidjson::SizeType>(s.size())); }
+
+void write_strings(Writer& w, const std::vector<std::string>& strings) {
+  w.StartArray();
+  for (const std::string& s : strings) write_string(w, s);
+  w.EndArray();
+}
+
+void write_milliseconds(Writer& w, double ms) { w.Double(std::isfinite(ms) && ms > 0 ? ms : 0.0); }
+
+void write_polynomials(Writer& w, const std::vector<Polynomial>& polynomials) {
+  w.StartArray();
+  for (const Polynomial& p : polynomials) write_string(w, to_string(p));
+  w.EndArray();
+}
+
+void write_buchberger_stats_members(Writer& w, const BuchbergerStats& s) {
+  w.Key("pairs");
+  w.Uint64(s.pairs_created);
+  w.Key("product_criterion");
+  w.Uint64(s.product_criterion);
+  w.Key("chain_criterion");
+  w.Uint64(s.chain_criterion);
+  w.Key("reductions");
+  w.Uint64(s.reductions);
+  w.Key("zero_reductions");
+  w.Uint64(s.zero_reductions);
+  w.Key("reduction_steps");
+  w.Uint64(s.reduction_steps);
+  w.Key("work");
+  w.Uint64(s.work);
+  w.Key("max_degree");
+  w.Int(s.max_degree);
+  w.Key("basis_size");
+  w.Uint64(s.basis_size);
+  w.Key("groebner_ms");
+  write_milliseconds(w, s.elapsed_ms);
+}
+
+void write_modular_stats(Writer& w, const ModularGroebnerStats& s) {
+  w.StartObject();
+  w.Key("primes");
+  w.Uint64(s.primes);
+  w.Key("lifted_primes");
+  w.Uint64(s.lifted_primes);
+  w.Key("unlucky_primes");
+  w.Uint64(s.unlucky_primes);
+  w.Key("bad_primes");
+  w.Uint64(s.bad_primes);
+  w.Key("reconstructions");
+  w.Uint64(s.reconstructions);
+  w.Key("checking_primes");
+  w.Uint64(s.checking_primes);
+  w.Key("rejected_candidates");
+  w.Uint64(s.rejected_candidates);
+  w.Key("homogenized");
+  w.Bool(s.homogenized);
+  w.Key("proven");
+  w.Bool(s.proven);
+  w.Key("verification_pairs");
+  w.Uint64(s.verification_pairs);
+  w.Key("threads");
+  w.Uint64(s.threads);
+  w.Key("modular_ms");
+  write_milliseconds(w, s.modular_ms);
+  w.Key("lift_ms");
+  write_milliseconds(w, s.lift_ms);
+  w.Key("verify_ms");
+  write_milliseconds(w, s.verify_ms);
+  w.Key("dehomogenize_ms");
+  write_milliseconds(w, s.dehomogenize_ms);
+  w.EndObject();
+}
+
+std::string finish(const rapidjson::StringBuffer& buffer) { return std::string(buffer.GetString(), buffer.GetSize()); }
+
+}  // namespace implicitizer::json

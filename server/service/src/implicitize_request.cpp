@@ -1,0 +1,23 @@
+#include "implicitizer/service/implicitize_request.hpp"
+
+#include "implicitizer/implicitization/parametrization.hpp"
+
+namespace implicitizer {
+
+ImplicitizeAnswer answer_implicitize_request(const ImplicitizeRequest& request, Budget budget,
+                                             const BuchbergerVariant& variant) {
+  // The deadline starts here, so that parsing a huge input counts against it too.
+  if (request.timeout_seconds) budget.set_timeout(*request.timeout_seconds);
+  std::vector<std::string> coordinates = {request.x, request.y};
+  if (request.z) coordinates.push_back(*request.z);
+  const Parametrization parametrization = parse_parametrization(coordinates, request.parameters, budget);
+  ImplicitizeParams options;
+  options.method = request.method;
+  options.budget = std::move(budget);
+  options.buchberger = variant;
+  options.modular_groebner = request.modular;
+  ImplicitizeResult result = implicitize(parametrization, options);
+  return {std::move(result), reproduce_scripts(parametrization)};
+}
+
+}  // namespace implicitizer

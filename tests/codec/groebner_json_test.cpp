@@ -1,0 +1,69 @@
+// Tests of server/codec/src/groebner_json.cpp: the decoder's fields and refusals,
+// and the answer's JSON shape with and without elimination, by both methods.
+#include "implicitizer/codec/groebner_json.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "implicitizer/core/errors.hpp"
+#include "service/service_support.hpp"
+
+namespace implicitizer {
+namespace {
+
+using testing::input_error_of;
+
+TEST(DecodeGroebnerRequest, ReadsEveryField) {
+  const GroebnerRequest r = decode_groebner_request(
+      R"({"polynomials":["x-s","y-s^2"],"variables":["s","x","y"],"order":"lex","weights":[1,2,3],)"
+      R"("eliminate":["s"],"timeout_ms":0})");
+  EXPECT_EQ(r.polynomials, (std::vector<std::string>{"x-s", "y-s^2"}));
+  EXPECT_EQ(*r.variables, (std::vector<std::string>{"s", "x", "y"}));
+  EXPECT_EQ(r.order.name(), "lex");
+  EXPECT_EQ(*r.weights, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(*r.eliminate, (std::vector<std::string>{"s"}));
+  EXPECT_DOUBLE_EQ(*r.timeout_seconds, 0.0);
+}
+
+TEST(DecodeGroebnerRequest, RefusesBadFields) {
+  EXPECT_EQ(input_error_of([] { decode_groebner_request("{}"); }).code(), "missing_field");
+  EXPECT_EQ(input_error_of([] { decode_groebner_request(R"({"polynomials":"x"})"); }).field(), "polynomials");
+  EXPECT_EQ(input_error_of([] { decode_groebner_request(R"({"polynomials":["x"],"weights":[1.5]})"); }).field(),
+            "weights[0]");
+  EXPECT_EQ(input_error_of([] { decode_groebner_request(R"({"polynomials":["x"],"ordering":"lex"})"); }).code(),
+            "unknown_field");
+}
+
+TEST(AnswerGroebnerRequest, ReducedBasisAndElimination) {
+  GroebnerRequest r;
+  r.polynomials = {"x^2+y", "y^2-x"};
+  r.order = MonomialOrder::lex();
+  const GroebnerAnswer a = answer_groebner_request(r);
+  const std::string json = encode_groebner_response(a);
+  EXPECT_EQ(json.rfind(R"({"basis":["y^4+y","x-y^2"],"order":"lex","method":"buchberger","stats":{"pairs":)", 0), 0u)
+      << json;
+  EXPECT_EQ(json.find("elimination_ideal"), std::string::npos);
+  EXPECT_EQ(json.find(R"("modular":{)"), std::string::npos) << json;
+  // The same basis modulo primes, proven, with the modular counters.
+  GroebnerRequest m = r;
+  m.method = GroebnerMethod::modular;
+  const std::string modular = encode_groebner_response(answer_groebner_request(m));
+  EXPECT_EQ(modular.rfind(R"({"basis":["y^4+y","x-y^2"],"order":"lex","method":"modular","stats":{"pairs":)", 0), 0u)
+      << modular;
+  EXPECT_NE(modular.find(R"("modular":{"primes":)"), std::string::npos) << modular;
+  EXPECT_NE(modular.find(R"("proven":true)"), std::string::npos) << modular;
+  EXPECT_EQ(
+      input_error_of([] { decode_groebner_request(R"({"polynomials":["x^2+y","y^2-x"],"method":"magic"})"); }).field(),
+      "method");
+
+  GroebnerRequest e;
+  e.polynomials = {"x-s-t", "y-s*t", "z-s^2"};
+  e.eliminate = std::vector<std::string>{"s", "t"};
+  const GroebnerAnswer b = answer_groebner_request(e);
+  ASSERT_TRUE(b.elimination_ideal.has_value());
+  EXPECT_NE(encode_groebner_response(b).find(R"("elimination_ideal":["x^2*z-y^2-2*y*z-z^2"]})"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace implicitizer
