@@ -145,10 +145,13 @@ def test_same_status_every_time(s):
 
 def test_memory_limit():
     # A product of 10 million terms with no term limit: only the memory budget stops it.
-    s = Server(BIN, "--max-memory-mb", "256", "--max-terms", "0", "--quiet")
+    # The time limit is far away so that it cannot fire first on a loaded machine (the
+    # default 10 s did once, with a load average of 9: 256 MiB took longer to fill).
+    s = Server(BIN, "--max-memory-mb", "256", "--max-terms", "0", "--default-timeout-ms", "600000",
+               "--max-timeout-ms", "600000", "--quiet")
     try:
         start_rss = rss_kib(s, "VmRSS")
-        status, body, seconds = timed_post(s, "/v1/groebner", {"polynomials": ["(a+b+c+d+e+f+g+h)^30"]})
+        status, body, seconds = timed_post(s, "/v1/groebner", {"polynomials": ["(a+b+c+d+e+f+g+h)^30"]}, timeout=600)
         check(status == 413 and error(body).get("code") == "memory_limit_exceeded"
               and error(body).get("limit") == "memory" and "256 MiB" in error(body).get("message", ""),
               "memory limit: %s %r" % (status, error(body)))
