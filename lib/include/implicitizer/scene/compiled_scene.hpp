@@ -122,7 +122,7 @@ class CompiledScene {
     std::int32_t leaf = -1;  ///< index of the polynomial leaf (implicit, parametric)
     std::int32_t count = 0;  ///< the kind's count parameter, if it has one (smooth n)
     NodeClass node_class = NodeClass::estimate;
-    /// A box containing the node's solid {v ≤ 0} (SceneCompiler::bound()): ±inf
+    /// A box containing the node's solid {v ≤ 0} (the kind's bound, node_operations.hpp): ±inf
     /// where unbounded or unknown (e.g. it depends on a uniform); the float copy is
     /// rounded outwards and is what the GLSL states.
     Vec3<double> box_lo{-kUnbounded, -kUnbounded, -kUnbounded}, box_hi{kUnbounded, kUnbounded, kUnbounded};
