@@ -75,8 +75,8 @@ void classify_smooth(NodeCompilation& c) {
   }
 }
 
-// {min ≤ 0} is the union of the solids; smin ≥ min − k/(2n), so where every child
-// grows the blend stays within k/(2n) of the union's hull.
+// {min ≤ 0} is the union of the solids: the hull of the children's boxes, growing
+// where every child grows.
 NodeBox bound_union(const NodeCompilation& c) {
   V l = c.child(0).box_lo, h = c.child(0).box_hi;
   bool g = true;
@@ -85,10 +85,16 @@ NodeBox bound_union(const NodeCompilation& c) {
     h = upper_corner(h, c.child(i).box_hi);
     g = g && c.child(i).box_grows;
   }
-  if (c.out.kind == NodeKind::csg_union) return {l, h, g};
-  if (!g || c.uniform({0})) return {};
+  return {l, h, g};
+}
+
+// smin ≥ min − k/(2n), so where every child grows the blend stays within k/(2n) of
+// the union's hull.
+NodeBox bound_smooth_union(const NodeCompilation& c) {
+  const NodeBox hull = bound_union(c);
+  if (!hull.grows || c.uniform({0})) return {};
   const double margin = c.value(0).x / (2.0 * c.out.count);
-  return {l - cube_corner(margin), h + cube_corner(margin), true};
+  return {hull.lo - cube_corner(margin), hull.hi + cube_corner(margin), true};
 }
 
 // smax ≥ max: the solid lies in every child's solid.
@@ -182,7 +188,7 @@ const NodeOperations kIntersectionOperations = {classify_as_children, bound_inte
                                                 evaluate_intersection<double>, emit_intersection};
 const NodeOperations kDifferenceOperations = {classify_as_children, bound_difference, evaluate_difference<float>,
                                               evaluate_difference<double>, emit_difference};
-const NodeOperations kSmoothUnionOperations = {classify_smooth, bound_union, evaluate_smooth_union<float>,
+const NodeOperations kSmoothUnionOperations = {classify_smooth, bound_smooth_union, evaluate_smooth_union<float>,
                                                evaluate_smooth_union<double>, emit_smooth_union};
 const NodeOperations kSmoothIntersectionOperations = {classify_smooth, bound_intersection,
                                                       evaluate_smooth_intersection<float>,
