@@ -9,7 +9,7 @@
 #include <limits>
 #include <utility>
 
-#include "flint_handles.hpp"
+#include "dyadic.hpp"
 #include "implicitizer/core/errors.hpp"
 
 namespace implicitizer {

@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "flint_handles.hpp"
+#include "dyadic.hpp"
 #include "implicitizer/core/errors.hpp"
 
 namespace implicitizer {

@@ -9,6 +9,8 @@
 #include "implicitizer/polynomial/parser.hpp"
 #include "implicitizer/polynomial/ring.hpp"
 #include "implicitizer/scene/primitives.hpp"
+#include "implicitizer/sdf/polynomial_program.hpp"
+#include "node_operations.hpp"
 
 namespace implicitizer {
 namespace {
@@ -158,5 +160,53 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
   }
   return leaf;
 }
+
+// ---------------------------------------------------------------------------------
+// The leaf as a scene node (kinds implicit and parametric).
+
+namespace {
+
+// Safe: SafeSdf bounds the distance but is not 1-Lipschitz (a polynomial's gradient
+// grows away from the surface); fast: F/|∇F| is an estimate.
+void classify_leaf(NodeCompilation& c) { c.out.node_class = c.safe() ? NodeClass::bound : NodeClass::estimate; }
+
+NodeBox bound_leaf(const NodeCompilation& c) {
+  const PolynomialLeaf& leaf = c.leaves[static_cast<std::size_t>(c.out.leaf)];
+  if (leaf.trimmed()) {
+    // t ≥ 0 everywhere: the solid {t ≤ 0} is the sheet, inside the trimming box.
+    const Vec3<float>& l = leaf.trim_lo();
+    const Vec3<float>& h = leaf.trim_hi();
+    return {{l.x, l.y, l.z}, {h.x, h.y, h.z}, false};
+  }
+  // Beyond kFarField (u = (p − c)·s, max norm) both modes return the positive box
+  // distance: the solid lies in the cube c ± kFarField/s (widened by 1e-6 for fp32's
+  // rounding of u).
+  const SceneFrame frame = make_scene_frame(leaf.frame_box());
+  const double half = std::max(FastSdf::kFarField, SafeSdf::kFarField) / to_mpq(frame.scale).get_d() * (1 + 1e-6);
+  const Vec3<double> centre{to_mpq(frame.centre[0]).get_d(), to_mpq(frame.centre[1]).get_d(),
+                            to_mpq(frame.centre[2]).get_d()};
+  return {centre - cube_corner(half), centre + cube_corner(half), false};
+}
+
+template <typename T>
+T evaluate_leaf(const SceneEvaluator<T>& e, const CompiledNode& n, const Vec3<T>& p) {
+  return e.leaf(n).evaluate(p);
+}
+
+std::string emit_leaf(SceneGlslWriter& w, const CompiledNode& n, const std::string& p) {
+  const PolynomialLeaf& leaf = w.leaf(n);
+  const std::string id = "leaf" + std::to_string(n.leaf);
+  w.require_helper(id, leaf.to_glsl(w.prefix() + "_" + id));
+  const std::string d = w.value(w.call(id, p), SceneGlslWriter::type(n));
+  if (!leaf.trimmed()) return d;
+  w.require_helper("trim", trim_glsl(w.prefix()));
+  return w.value(w.call("trim", p + ", " + glsl_vec3(leaf.trim_lo()) + ", " + glsl_vec3(leaf.trim_hi()) + ", " + d),
+                 "trimmed to the patch's box");
+}
+
+}  // namespace
+
+const NodeOperations kPolynomialLeafOperations = {classify_leaf, bound_leaf, evaluate_leaf<float>,
+                                                  evaluate_leaf<double>, emit_leaf};
 
 }  // namespace implicitizer

@@ -22,7 +22,7 @@
 /// children are 1-Lipschitz. A 1-Lipschitz function with the right sign never
 /// exceeds the distance to the other side of its zero set. Over children that are
 /// only bounds (not Lipschitz) the blend term can exceed the distance: safe mode
-/// refuses that (compiled_scene.cpp).
+/// refuses that (classify_smooth, boolean_operators.cpp).
 
 #include <algorithm>
 #include <cmath>

@@ -15,7 +15,7 @@
 ///     v(p) > 0  ⇒  v(p) ≤ dist(p, {v ≤ 0})   and   v(p) < 0  ⇒  −v(p) ≤ dist(p, {v ≥ 0}),
 /// i.e. |v| never exceeds the distance to the other side of the node's surface, so
 /// sphere tracing with v never crosses it ("a bound"; proofs in docs/sdf.md and at
-/// each case of classify() in compiled_scene.cpp). Smooth operators are only
+/// each kind's classify, beside its concept in lib/src/scene/). Smooth operators are only
 /// bounds over 1-Lipschitz children, so compile_scene() tracks NodeClass and refuses
 /// the others (InputError `unsafe_operator`). The claims are of exact arithmetic;
 /// fp32 rounding adds a few ulps of the values involved.
@@ -116,12 +116,13 @@ class CompiledScene {
   /// constants the kind derives at compile time (e.g. cos and sin of a baked angle).
   struct Node {
     NodeKind kind = NodeKind::sphere;
+    const NodeOperations* operations = nullptr;  ///< the kind's (node_kind_info(kind).operations)
     std::vector<std::uint32_t> children;
     std::vector<Slot> slots;
     std::int32_t leaf = -1;  ///< index of the polynomial leaf (implicit, parametric)
     std::int32_t count = 0;  ///< the kind's count parameter, if it has one (smooth n)
     NodeClass node_class = NodeClass::estimate;
-    /// A box containing the node's solid {v ≤ 0} (SceneCompiler::bound()): ±inf
+    /// A box containing the node's solid {v ≤ 0} (the kind's bound, node_operations.hpp): ±inf
     /// where unbounded or unknown (e.g. it depends on a uniform); the float copy is
     /// rounded outwards and is what the GLSL states.
     Vec3<double> box_lo{-kUnbounded, -kUnbounded, -kUnbounded}, box_hi{kUnbounded, kUnbounded, kUnbounded};
@@ -134,9 +135,6 @@ class CompiledScene {
  private:
   friend class SceneCompiler;
   friend class SceneGlslWriter;
-
-  template <typename T>
-  T evaluate_node(std::uint32_t index, const Vec3<T>& p, const UniformValues& values) const;
 
   std::string name_;
   SdfMode mode_ = SdfMode::fast;

@@ -16,8 +16,9 @@
 /// How to add a node kind (e.g. `twist`), all local changes:
 ///  1. here: one enumerator in NodeKind (in the group of its arity);
 ///  2. lib/src/scene/scene_node.cpp: one row of kKinds (type name, arity,
-///     parameters with their range, uniformability and default). The JSON decoder
-///     (server/codec/src/scene_json.cpp) needs nothing more for numeric parameters;
+///     parameters with their range, uniformability and default, and the kind's
+///     NodeOperations). The JSON decoder (server/codec/src/scene_json.cpp) needs
+///     nothing more for numeric parameters;
 ///  3. your concept's header and source (e.g. scene/domain_operators.hpp/.cpp): the C++
 ///     twin as a template over T = float/double on Vec3<T> (vec3.hpp), and next to
 ///     it the GLSL text of the same operations in the same order, as a function
@@ -25,21 +26,21 @@
 ///     `PREFIX_xxx(...)` (helpers are prefixed with the scene's NAME so two scenes can
 ///     share a shader; use no local variable containing `_` so no uniform can be
 ///     shadowed);
-///  4. lib/src/scene/compiled_scene.cpp, three switch cases, each marked
-///     "NODE KIND" in a comment:
-///       - classify(): what the node guarantees in safe mode (NodeClass: 1-Lipschitz,
+///  4. the same source: the kind's NodeOperations (lib/src/scene/node_operations.hpp),
+///     four functions that wire its parameters and children to the twin and the text:
+///       - classify: what the node guarantees in safe mode (NodeClass: 1-Lipschitz,
 ///         distance bound, or refuse with InputError `unsafe_operator`), from its
 ///         children's classes; plus any validation the table's ranges cannot say;
-///       - evaluate_node<T>(): map the point, evaluate the child(ren), map the value,
+///       - bound: a box containing the node's solid {v ≤ 0} and whether v ≥ the
+///         distance to that box outside it (what safe repetition needs of its child;
+///         "unknown", NodeBox{}, is always a correct answer);
+///       - evaluate<T>: map the point, evaluate the child(ren), map the value,
 ///         calling the twin;
-///       - emit_node(): the same in GLSL, calling writer.require_helper(id, text) once
-///         per helper and writer.point()/writer.value() for each statement;
-///     and a fourth, bound(): a box containing the node's solid {v ≤ 0} and whether
-///     v ≥ the distance to that box outside it (what safe repetition needs of its
-///     child; "unknown" is always a correct answer);
-///     Parameters are read with the slot accessors (scalar/vector for C++,
-///     glsl_scalar/glsl_vector for GLSL): they hide whether a parameter is baked or
-///     a uniform;
+///       - emit: the same in GLSL, calling writer.require_helper(id, text) once per
+///         helper and writer.point()/writer.value() for each statement.
+///     Parameters are read with the slot accessors (SlotReader's scalar/vector for
+///     C++, the writer's scalar/vector for GLSL): they hide whether a parameter is
+///     baked or a uniform. lib/src/scene/compiled_scene.cpp needs no change;
 ///  5. tests in tests/scene/ (closed-form values, GLSL compiles, runs on llvmpipe
 ///     and agrees with evaluate<float>) and the node's section in docs/sdf.md.
 
@@ -127,12 +128,17 @@ struct ParameterSpec {
   std::optional<double> default_value;  ///< when absent the parameter is required
 };
 
+/// What a kind does when a scene is compiled, evaluated and printed (private to
+/// lib/src/scene: node_operations.hpp).
+struct NodeOperations;
+
 /// The table row of a kind.
 struct NodeKindInfo {
   NodeKind kind;
   std::string_view type_name;  ///< the JSON "type"
   NodeArity arity;
   std::vector<ParameterSpec> parameters;  ///< in slot order
+  const NodeOperations* operations;       ///< classify, bound, evaluate, emit
 };
 
 /// The row of `kind`.

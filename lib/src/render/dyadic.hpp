@@ -1,7 +1,8 @@
 #pragma once
-// Private to lib/src/render: FLINT's fmpz and fmpz_poly owners (the shared ones of
-// implicitizer/modular/flint_handles.hpp), and dyadic rationals m·2^e (every double is one; sums and products stay dyadic), shared by
-// ray_polynomial.cpp (exact expansion) and root_isolation.cpp (exact isolation).
+// Private to lib/src/render: dyadic rationals m·2^e (every double is one; sums and
+// products stay dyadic, so a ray's polynomial expands exactly), shared by
+// ray_polynomial.cpp (exact expansion) and root_isolation.cpp (exact isolation). The
+// mantissa is FLINT's fmpz, through the owners of implicitizer/modular/flint_handles.hpp.
 
 #include <flint/fmpz.h>
 #include <flint/fmpz_poly.h>
