@@ -1,7 +1,6 @@
 #include "router.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <utility>
 
 #include "handlers/groebner.hpp"
@@ -14,6 +13,7 @@
 #include "handlers/static_files.hpp"
 #include "implicitizer/core/budget.hpp"
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/core/stopwatch.hpp"
 
 namespace implicitizer::server {
 
@@ -176,7 +176,7 @@ Computation Router::finish(const Request& request, const std::string& endpoint, 
   // (which may be a megabyte): copy only the header.
   computation.run = [this, inner = std::move(computation.run), budget = computation.budget, endpoint,
                      head = Request(request.base())]() {
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch timer;
     Response response;
     ComputationOutcome outcome = ComputationOutcome::ok;
     try {
@@ -188,7 +188,7 @@ Computation Router::finish(const Request& request, const std::string& endpoint, 
       outcome = classify(std::current_exception());
       response = make_exception_response(std::current_exception());
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = timer.elapsed_seconds();
     context_.metrics.record_computation(endpoint, outcome, seconds);
     return finish(head, std::move(response));
   };

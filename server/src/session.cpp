@@ -6,6 +6,7 @@
 #include <boost/asio/post.hpp>
 #include <boost/asio/write.hpp>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <string_view>
 
@@ -88,7 +89,7 @@ void Session::do_read_body() {
 }
 
 void Session::on_read(beast::error_code ec, std::size_t) {
-  read_done_ = std::chrono::steady_clock::now();
+  since_read_.restart();
   if (ec == http::error::body_limit) {
     return reject(http::status::payload_too_large, "body_too_large",
                   "the request body exceeds " + std::to_string(context_.config.max_body_bytes) + " bytes");
@@ -157,8 +158,7 @@ void Session::on_computed(Response response) {
   computing_ = false;
   if (client_gone_) {
     // 499 is nginx's "client closed request": logged, never sent.
-    context_.metrics.record_request(
-        endpoint_, 499, std::chrono::duration<double>(std::chrono::steady_clock::now() - read_done_).count());
+    context_.metrics.record_request(endpoint_, 499, since_read_.elapsed_seconds());
     log_request(499, 0);
     return do_close();
   }
@@ -176,8 +176,7 @@ void Session::send(Response response) {
 
 void Session::on_write(beast::error_code ec, std::size_t bytes) {
   const unsigned status = response_->result_int();
-  context_.metrics.record_request(endpoint_, status,
-                                  std::chrono::duration<double>(std::chrono::steady_clock::now() - read_done_).count());
+  context_.metrics.record_request(endpoint_, status, since_read_.elapsed_seconds());
   log_request(status, bytes);
   if (ec) return;  // the stream is closed or broken; the session ends with this handler
   const bool keep_alive = response_->keep_alive();
@@ -219,7 +218,7 @@ void Session::drain() {
 }
 
 void Session::log_request(unsigned status, std::size_t bytes) {
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - read_done_).count();
+  const double ms = since_read_.elapsed_ms();
   context_.log.write(method_, path_, status, ms, bytes);
 }
 

@@ -15,13 +15,13 @@
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
-#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "access_log.hpp"
 #include "config.hpp"
+#include "implicitizer/core/stopwatch.hpp"
 #include "metrics_registry.hpp"
 #include "router.hpp"
 #include "worker_pool.hpp"
@@ -77,7 +77,7 @@ class Session : public std::enable_shared_from_this<Session> {
   std::string method_;
   std::string path_;
   std::string endpoint_ = "other";
-  std::chrono::steady_clock::time_point read_done_;
+  Stopwatch since_read_;  // restarted when a request has been read: its time for the log and metrics
 
   // The computation in flight, if any.
   bool computing_ = false;

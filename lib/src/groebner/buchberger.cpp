@@ -1,9 +1,9 @@
 #include "implicitizer/groebner/buchberger.hpp"
 
-#include <chrono>
 #include <stdexcept>
 
 #include "buchberger_engine.hpp"
+#include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/groebner/reduced_basis.hpp"
 #include "int_polynomial.hpp"
 
@@ -28,7 +28,7 @@ GroebnerResult compute_groebner_basis(std::span<const Polynomial> generators, co
   for (const auto& g : generators) {
     if (g.ring() != ring && !(*g.ring() == *ring)) throw std::invalid_argument("generators from different rings");
   }
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch timer;
   std::vector<detail::IntPolynomial> input;
   for (const auto& g : generators) {
     if (!g.is_zero()) input.push_back(detail::to_int_polynomial(g));
@@ -46,7 +46,7 @@ GroebnerResult compute_groebner_basis(std::span<const Polynomial> generators, co
     result.basis = reduce_basis(kept, params.budget);
   }
   result.stats.basis_size = result.basis.size();
-  result.stats.elapsed_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  result.stats.elapsed_ms = timer.elapsed_ms();
   return result;
 }
 

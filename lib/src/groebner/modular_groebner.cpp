@@ -1,10 +1,6 @@
 #include "implicitizer/groebner/modular_groebner.hpp"
 
-#include <flint/fmpq.h>
-#include <flint/fmpz.h>
-
 #include <algorithm>
-#include <chrono>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -13,8 +9,9 @@
 
 #include "buchberger_engine.hpp"
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/groebner/reduced_basis.hpp"
-#include "implicitizer/modular/flint_handles.hpp"
+#include "implicitizer/modular/crt_lift.hpp"
 #include "implicitizer/modular/one_per_thread.hpp"
 #include "implicitizer/modular/prime_sequence.hpp"
 #include "int_polynomial.hpp"
@@ -24,13 +21,8 @@ namespace implicitizer {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using detail::IntPolynomial;
 using detail::ModPolynomial;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // More primes than this and the coefficients would have over 120 000 bits: no input
 // this service accepts gets there, so it means a bug (a reconstruction that never
@@ -146,19 +138,47 @@ std::vector<std::int32_t> leading_key(const Ring& ring, const std::vector<ModPol
 
 // ---------------------------------------------------------------- lifting
 
-// The coefficients of one basis element modulo the product of the primes so far,
-// by monomial (the union of the supports: a coefficient that vanished modulo one
-// prime is 0 there, not absent).
+// The coefficients of one basis element, lifted by monomial (the union of the
+// images' supports: a coefficient that vanished modulo one prime is 0 there, not
+// absent). Wang's bound without margin: the driver confirms the candidate on
+// further primes (confirms()).
 struct LiftedElement {
   std::vector<std::int32_t> monomials;  // decreasing
-  std::vector<Fmpz> residues;           // in [0, modulus)
+  CrtLift lift{0};
+
+  void add(const ModPolynomial& g, std::uint64_t prime, const Ring& ring) {
+    const std::size_t w = ring.monomial_size();
+    std::vector<std::int32_t> merged;
+    std::vector<std::size_t> old_positions;  // where each lifted coefficient goes
+    std::vector<mp_limb_t> residues;         // g on the merged monomials
+    std::size_t i = 0, j = 0;
+    while (i < lift.size() || j < g.size()) {
+      int cmp;
+      if (i == lift.size()) {
+        cmp = -1;
+      } else if (j == g.size()) {
+        cmp = 1;
+      } else {
+        cmp = ring.compare(monomials.data() + i * w, g.monomials.data() + j * w);
+      }
+      const std::int32_t* m = cmp >= 0 ? monomials.data() + i * w : g.monomials.data() + j * w;
+      if (cmp >= 0) old_positions.push_back(residues.size());
+      residues.push_back(cmp <= 0 ? g.coefficients[j] : 0);
+      merged.insert(merged.end(), m, m + w);
+      if (cmp >= 0) ++i;
+      if (cmp <= 0) ++j;
+    }
+    if (residues.size() != lift.size()) lift.spread(old_positions, residues.size());
+    monomials = std::move(merged);
+    lift.add(residues, prime);
+  }
 };
 
 // Chinese remaindering of the reduced bases of the primes that share one set of
 // leading monomials.
 class BasisLift {
  public:
-  explicit BasisLift(const Ring& ring) : ring_(ring) { fmpz_one(modulus_.get()); }
+  explicit BasisLift(const Ring& ring) : ring_(ring) {}
 
   std::size_t primes() const { return primes_; }
   std::size_t first_seen() const { return first_seen_; }
@@ -166,77 +186,35 @@ class BasisLift {
 
   void add(const std::vector<ModPolynomial>& basis, std::uint64_t prime) {
     if (elements_.empty()) elements_.resize(basis.size());
-    const std::size_t w = ring_.monomial_size();
-    Fmpz zero;
-    for (std::size_t e = 0; e < basis.size(); ++e) {
-      const ModPolynomial& g = basis[e];
-      LiftedElement& old = elements_[e];
-      LiftedElement merged;
-      std::size_t i = 0, j = 0;
-      while (i < old.residues.size() || j < g.size()) {
-        int cmp;
-        if (i == old.residues.size()) {
-          cmp = -1;
-        } else if (j == g.size()) {
-          cmp = 1;
-        } else {
-          cmp = ring_.compare(old.monomials.data() + i * w, g.monomials.data() + j * w);
-        }
-        const std::int32_t* m = cmp >= 0 ? old.monomials.data() + i * w : g.monomials.data() + j * w;
-        const fmpz* r = cmp >= 0 ? old.residues[i].get() : zero.get();
-        const std::uint64_t c = cmp <= 0 ? g.coefficients[j] : 0;
-        merged.monomials.insert(merged.monomials.end(), m, m + w);
-        merged.residues.emplace_back();
-        fmpz_CRT_ui(merged.residues.back().get(), r, modulus_.get(), c, prime, /*sign=*/0);
-        if (cmp >= 0) ++i;
-        if (cmp <= 0) ++j;
-      }
-      old = std::move(merged);
-    }
-    fmpz_mul_ui(modulus_.get(), modulus_.get(), prime);
+    for (std::size_t e = 0; e < basis.size(); ++e) elements_[e].add(basis[e], prime, ring_);
     ++primes_;
   }
 
-  // Rational reconstruction of every coefficient (Wang's: |n|, d ≤ √(M/2)); the
-  // candidate basis, or nullopt at the first coefficient that has none.
-  std::optional<std::vector<Polynomial>> reconstruct(const RingPtr& ring) const {
+  // Rational reconstruction of every coefficient; the candidate basis, or nullopt
+  // at the first coefficient that has none.
+  std::optional<std::vector<Polynomial>> reconstruct(const RingPtr& ring) {
     std::vector<Polynomial> out;
-    fmpq_t q;
-    fmpq_init(q);
     const std::size_t w = ring_.monomial_size();
-    for (const auto& e : elements_) {
-      std::vector<mpq_class> values;
-      mpz_class denominator = 1;
-      for (const auto& r : e.residues) {
-        if (!fmpq_reconstruct_fmpz(q, r.get(), modulus_.get())) {
-          fmpq_clear(q);
-          return std::nullopt;
-        }
-        mpq_class v;
-        fmpq_get_mpq(v.get_mpq_t(), q);
-        mpz_lcm(denominator.get_mpz_t(), denominator.get_mpz_t(), v.get_den_mpz_t());
-        values.push_back(std::move(v));
-      }
+    for (auto& e : elements_) {
+      if (!e.lift.reconstruct()) return std::nullopt;
+      std::vector<Integer> values = e.lift.integer_values();
       std::vector<Integer> coefficients;
       std::vector<std::int32_t> monomials;
       for (std::size_t i = 0; i < values.size(); ++i) {
         if (values[i] == 0) continue;
-        mpq_class scaled = values[i] * denominator;
-        coefficients.push_back(scaled.get_num());
+        coefficients.push_back(std::move(values[i]));
         monomials.insert(monomials.end(), e.monomials.begin() + static_cast<long>(i * w),
                          e.monomials.begin() + static_cast<long>((i + 1) * w));
       }
-      out.push_back(Polynomial::from_terms(ring, to_rational(mpz_class(1)) / to_rational(denominator),
+      out.push_back(Polynomial::from_terms(ring, to_rational(Integer(1)) / to_rational(e.lift.common_denominator()),
                                            std::move(coefficients), std::move(monomials)));
     }
-    fmpq_clear(q);
     return out;
   }
 
  private:
   const Ring& ring_;
   std::vector<LiftedElement> elements_;
-  Fmpz modulus_;
   std::size_t primes_ = 0;
   std::size_t first_seen_ = 0;
 };
@@ -345,9 +323,9 @@ class ModularDriver {
         if (confirms(*candidate, batch)) {
           stats_.checking_primes = batch.size();
           if (!params_.prove) return *candidate;
-          const auto start = Clock::now();
+          const Stopwatch timer;
           const bool proven = prove_candidate(*run_ring_, generators_, *candidate, params_.buchberger, stats_);
-          stats_.verify_ms += ms_since(start);
+          stats_.verify_ms += timer.elapsed_ms();
           if (proven) {
             stats_.proven = true;
             return *candidate;
@@ -358,7 +336,7 @@ class ModularDriver {
         candidate.reset();
       }
       for (const PrimeRun& run : batch) absorb(run);
-      const auto start = Clock::now();
+      const Stopwatch timer;
       BasisLift* majority = majority_lift();
       // Reconstruction costs about as much as one prime's Chinese remaindering of the
       // whole basis, and fails until the modulus passes the coefficients' size: try
@@ -369,7 +347,7 @@ class ModularDriver {
         candidate = majority->reconstruct(ring_);
         if (!candidate) next_reconstruction_ = majority->primes() + std::max<std::size_t>(1, majority->primes() / 4);
       }
-      stats_.lift_ms += ms_since(start);
+      stats_.lift_ms += timer.elapsed_ms();
     }
   }
 
@@ -380,7 +358,7 @@ class ModularDriver {
   // machine, a scheduler tick), so more threads are used only when a prime took
   // longer than kThreadWorthMs.
   std::vector<PrimeRun> next_batch() {
-    const auto start = Clock::now();
+    const Stopwatch timer;
     std::vector<PrimeRun> batch;
     const std::size_t wanted = stats_.primes == 0 ? 1 : batch_size_;
     while (batch.size() < wanted) {
@@ -404,7 +382,7 @@ class ModularDriver {
         batch.push_back(std::move(r));
       }
     }
-    const double ms = ms_since(start);
+    const double ms = timer.elapsed_ms();
     if (stats_.primes == batch.size() && ms > kThreadWorthMs) batch_size_ = threads_;
     stats_.modular_ms += ms;
     return batch;
@@ -479,7 +457,7 @@ class ModularDriver {
 
 GroebnerResult compute_groebner_basis_modular(std::span<const Polynomial> generators,
                                               const ModularGroebnerParams& params, ModularGroebnerStats* stats_out) {
-  const auto start = Clock::now();
+  const Stopwatch timer;
   ModularGroebnerStats stats;
   GroebnerResult result;
   std::vector<const Polynomial*> nonzero;
@@ -517,16 +495,16 @@ GroebnerResult compute_groebner_basis_modular(std::span<const Polynomial> genera
   std::vector<Polynomial> basis = ModularDriver(work_ring, lift_ring, std::move(work), params, projection, stats).run();
   if (homogenize && params.prove) {
     // h = 1: a Gröbner basis of the original ideal, not reduced (IVA §8.4 Thm 4).
-    const auto dehomogenize_start = Clock::now();
+    const Stopwatch dehomogenize_timer;
     std::vector<Polynomial> affine;
     for (const auto& g : basis) affine.push_back(dehomogenize(g, ring));
     basis = reduce_basis(affine, params.buchberger.budget);
-    stats.dehomogenize_ms = ms_since(dehomogenize_start);
+    stats.dehomogenize_ms = dehomogenize_timer.elapsed_ms();
   }
   result.basis = std::move(basis);
   result.stats = stats.last_prime;
   result.stats.basis_size = result.basis.size();
-  result.stats.elapsed_ms = ms_since(start);
+  result.stats.elapsed_ms = timer.elapsed_ms();
   if (stats_out != nullptr) *stats_out = stats;
   return result;
 }

@@ -1,13 +1,10 @@
 #include "implicitizer/implicitization/interpolation.hpp"
 
-#include <flint/fmpq.h>
-#include <flint/fmpz.h>
 #include <flint/nmod_mat.h>
 #include <flint/nmod_vec.h>
 #include <flint/ulong_extras.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -19,20 +16,16 @@
 #include <thread>
 
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 #include "implicitizer/implicitization/verify.hpp"
+#include "implicitizer/modular/crt_lift.hpp"
 #include "implicitizer/modular/flint_handles.hpp"
 #include "implicitizer/modular/one_per_thread.hpp"
 
 namespace implicitizer {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // The most primes computed at once (see batch_threads).
 constexpr unsigned kMaxThreads = 4;
@@ -53,10 +46,12 @@ constexpr double kDirectColumns = 36;
 // set-up, whose cost does not grow as the cube.
 constexpr double kTimedColumns = 200;
 
-// Rational reconstruction accepts a value only with this many bits to spare, so that
-// a residue that is not yet the image of a small rational is taken for one with
-// probability about 2^-20; such a false value is refuted by the next prime.
-constexpr std::size_t kMarginBits = 20;
+// The lift of the normalized kernel vector (leading coefficient 1, so each entry is
+// F_i / F_lead for the primitive equation F: the denominators all divide F_lead).
+// A value is accepted only with 20 bits to spare, so that a residue that is not yet
+// the image of a small rational is taken for one with probability about 2^-20; such
+// a false value is refuted by the next prime, and the candidate is verified anyway.
+constexpr CrtLiftParams kLiftParams{.margin_bits = 20, .shared_denominator = true};
 
 // ---------------------------------------------------------------- the forms
 
@@ -499,151 +494,6 @@ std::int64_t degree_bound_of(const MapForms& m) {
 
 // ---------------------------------------------------------------- reconstruction
 
-// The coefficients of the normalized kernel vector (leading coefficient 1, so each
-// is F_i / F_lead for the primitive equation F), known modulo the product M of the
-// primes so far, as rationals checked against every new prime.
-//
-// A value n/d is accepted from its residue a when it is the only rational with
-// |n|, d ≤ √(M / 2^21) congruent to a (fmpq_reconstruct_fmpz_2), or, sooner, when
-// a·L (L the lcm of the denominators some later prime confirmed: a multiple of every
-// denominator once one is known, since they all divide F_lead) has a symmetric
-// residue 20 bits shorter than M. A residue that is not yet the image of its value
-// passes either test with probability about 2^-20; the next prime refutes such a
-// value unless it happens to agree with it (probability 1/p).
-class RationalLift {
- public:
-  explicit RationalLift(std::size_t size) : residues_(size), values_(size), known_(size, 0), confirmed_(size, 0) {
-    for (auto& r : residues_) fmpz_init(&r);
-    for (auto& v : values_) fmpq_init(&v);
-    fmpz_init_set_ui(modulus_, 1);
-    fmpz_init_set_ui(denominator_, 1);
-    fmpz_init(scratch_);
-    fmpz_init(bound_);
-  }
-  ~RationalLift() {
-    for (auto& r : residues_) fmpz_clear(&r);
-    for (auto& v : values_) fmpq_clear(&v);
-    fmpz_clear(modulus_);
-    fmpz_clear(denominator_);
-    fmpz_clear(scratch_);
-    fmpz_clear(bound_);
-  }
-  RationalLift(const RationalLift&) = delete;
-  RationalLift& operator=(const RationalLift&) = delete;
-
-  std::size_t primes() const { return primes_; }
-  std::size_t modulus_bits() const { return fmpz_bits(modulus_); }
-
-  // Adds the residues modulo p (a prime not used before): drops the values p
-  // refutes and reconstructs the missing ones modulo the new M. Returns whether
-  // every coefficient has a value.
-  bool add(const std::vector<mp_limb_t>& residues, mp_limb_t p) {
-    nmod_t mod;
-    nmod_init(&mod, p);
-    for (std::size_t i = 0; i < residues_.size(); ++i) {
-      if (known_[i]) {
-        const mp_limb_t den = fmpz_fdiv_ui(fmpq_denref(&values_[i]), p);
-        const bool agrees =
-            den != 0 && nmod_mul(fmpz_fdiv_ui(fmpq_numref(&values_[i]), p), n_invmod(den, p), mod) == residues[i];
-        if (agrees && !confirmed_[i]) {
-          confirmed_[i] = 1;
-          fmpz_lcm(denominator_, denominator_, fmpq_denref(&values_[i]));
-        }
-        if (!agrees) known_[i] = confirmed_[i] = 0;
-      }
-      if (primes_ == 0) {
-        fmpz_set_ui(&residues_[i], residues[i]);
-      } else {
-        fmpz_CRT_ui(&residues_[i], &residues_[i], modulus_, residues[i], p, /*sign=*/0);
-      }
-    }
-    fmpz_mul_ui(modulus_, modulus_, p);
-    ++primes_;
-    fmpz_fdiv_q_2exp(bound_, modulus_, kMarginBits + 1);
-    fmpz_sqrt(bound_, bound_);
-    bool complete = true;
-    for (std::size_t i = 0; i < residues_.size(); ++i) {
-      if (!known_[i]) known_[i] = reconstruct(i);
-      complete = complete && known_[i];
-    }
-    if (!complete) complete = reconstruct_with_trial_denominator();
-    return complete;
-  }
-
-  // The values times the lcm of their denominators: integers. Precondition: add()
-  // returned true.
-  std::vector<Integer> integer_values() const {
-    fmpz_t l, c;
-    fmpz_init_set_ui(l, 1);
-    fmpz_init(c);
-    for (const auto& v : values_) fmpz_lcm(l, l, fmpq_denref(&v));
-    std::vector<Integer> out(values_.size());
-    for (std::size_t i = 0; i < values_.size(); ++i) {
-      fmpz_divexact(c, l, fmpq_denref(&values_[i]));
-      fmpz_mul(c, c, fmpq_numref(&values_[i]));
-      fmpz_get_mpz(out[i].get_mpz_t(), c);
-    }
-    fmpz_clear(l);
-    fmpz_clear(c);
-    return out;
-  }
-
- private:
-  bool reconstruct(std::size_t i) {
-    fmpz_mul(scratch_, &residues_[i], denominator_);
-    fmpz_smod(scratch_, scratch_, modulus_);
-    if (fmpz_bits(scratch_) + kMarginBits < fmpz_bits(modulus_)) {
-      fmpq_set_fmpz_frac(&values_[i], scratch_, denominator_);
-      return true;
-    }
-    // FLINT needs positive bounds; below 2^21 only the test above can accept.
-    return !fmpz_is_zero(bound_) && fmpq_reconstruct_fmpz_2(&values_[i], &residues_[i], modulus_, bound_, bound_) != 0;
-  }
-
-  // The second test with a trial L: the lcm of every denominator found so far,
-  // confirmed or not. All those values share F_lead's divisors as denominators, so
-  // the balanced bound of the first test is what fails on an equation with a small
-  // leading coefficient and large others (tri_quadratic: 2209 and 2^28; 62-bit M
-  // allows 2^20 for both), while every a·L is then small. A wrong trial L passes for
-  // a coefficient with probability about 2^-20, and the candidate is verified anyway:
-  // this saves a prime (a whole kernel) on most small surfaces.
-  bool reconstruct_with_trial_denominator() {
-    fmpz_t trial;
-    fmpz_init_set(trial, denominator_);
-    for (std::size_t i = 0; i < values_.size(); ++i) {
-      if (known_[i]) fmpz_lcm(trial, trial, fmpq_denref(&values_[i]));
-    }
-    bool complete = !fmpz_equal(trial, denominator_);  // else the first test already failed
-    for (std::size_t i = 0; complete && i < residues_.size(); ++i) {
-      if (known_[i]) continue;
-      fmpz_mul(scratch_, &residues_[i], trial);
-      fmpz_smod(scratch_, scratch_, modulus_);
-      complete = fmpz_bits(scratch_) + kMarginBits < fmpz_bits(modulus_);
-    }
-    if (complete) {
-      for (std::size_t i = 0; i < residues_.size(); ++i) {
-        if (known_[i]) continue;
-        fmpz_mul(scratch_, &residues_[i], trial);
-        fmpz_smod(scratch_, scratch_, modulus_);
-        fmpq_set_fmpz_frac(&values_[i], scratch_, trial);
-        known_[i] = 1;
-      }
-    }
-    fmpz_clear(trial);
-    return complete;
-  }
-
-  std::vector<fmpz> residues_;  // in [0, M)
-  std::vector<fmpq> values_;
-  std::vector<char> known_;
-  std::vector<char> confirmed_;
-  std::size_t primes_ = 0;
-  fmpz_t modulus_;
-  fmpz_t denominator_;  // L
-  fmpz_t scratch_;
-  fmpz_t bound_;  // √(M / 2^21), for fmpq_reconstruct_fmpz_2
-};
-
 // The polynomial with `coefficients` on the columns of `basis`, in implicit_ring(n).
 Polynomial polynomial_of(const MonomialBasis& basis, const std::vector<Integer>& coefficients) {
   const RingPtr ring = implicit_ring(basis.variables);
@@ -671,7 +521,7 @@ class InterpolationDriver {
   // The equation, or nullopt when its degree is proven above `max_degree` (only
   // when that is below the degree bound: at the bound there is no such answer).
   std::optional<InterpolationResult> run(std::int32_t max_degree = kMaxTotalDegree) {
-    const auto start = Clock::now();
+    const Stopwatch timer;
     const std::size_t n = forms_.coordinates;
     const std::int64_t bound = degree_bound_of(forms_);
     stats_.degree_bound = static_cast<std::int32_t>(std::min<std::int64_t>(bound, kMaxTotalDegree));
@@ -681,7 +531,7 @@ class InterpolationDriver {
     const bool capped = max_degree < stats_.degree_bound;
     const std::int32_t d_max = capped ? max_degree : stats_.degree_bound;
     const double max_columns = static_cast<double>(options_.max_columns);
-    stats_.search_ms += ms_since(start);
+    stats_.search_ms += timer.elapsed_ms();
 
     for (;;) {
       options_.budget.check("interpolation");
@@ -716,9 +566,9 @@ class InterpolationDriver {
       const unsigned threads = batch_threads(basis.size(), /*upward_step=*/searching && degree < d_max);
       stats_.threads = std::max(stats_.threads, threads);
       refuse_kernel_past_deadline(columns);
-      const auto batch_start = Clock::now();
+      const Stopwatch batch_timer;
       std::vector<KernelImage> images = run_batch(basis, threads);
-      const double batch_ms = ms_since(batch_start);
+      const double batch_ms = batch_timer.elapsed_ms();
       (searching ? stats_.search_ms : stats_.images_ms) += batch_ms;
       if (columns >= kTimedColumns) ms_per_cubed_column_ = batch_ms / (columns * columns * columns);
       for (KernelImage& image : images) {
@@ -830,18 +680,19 @@ class InterpolationDriver {
     }
     if (lead_ && image.lead < *lead_) {  // so did every prime so far
       stats_.unlucky_primes += lift_->primes();
-      lift_.emplace(image.vector.size());
+      lift_.emplace(image.vector.size(), kLiftParams);
     }
     lead_ = image.lead;
     // The candidate is verified as soon as every coefficient has a value, without
     // waiting for a prime that changes none: that prime costs as much as the
     // verification or more (tp_33: 1.3 s against 0.3 s), the verification is needed
-    // anyway, and a value is wrong only with probability about 2^-20 (RationalLift).
-    const auto reconstruction_start = Clock::now();
-    const bool complete = lift_->add(image.vector, image.prime);
+    // anyway, and a value is wrong only with probability about 2^-20 (kLiftParams).
+    const Stopwatch reconstruction_timer;
+    lift_->add(image.vector, image.prime);
+    const bool complete = lift_->reconstruct();
     std::optional<Polynomial> candidate;
     if (complete) candidate = polynomial_of(basis_of(lift_degree_), lift_->integer_values());
-    stats_.reconstruction_ms += ms_since(reconstruction_start);
+    stats_.reconstruction_ms += reconstruction_timer.elapsed_ms();
     if (!candidate) return std::nullopt;
     stats_.degree = lift_degree_;
     stats_.rows = image.rows;
@@ -858,16 +709,16 @@ class InterpolationDriver {
     // kernel there.
     if (lift_) stats_.unlucky_primes += lift_->primes();
     lift_degree_ = degree;
-    lift_.emplace(basis_of(degree).size());
+    lift_.emplace(basis_of(degree).size(), kLiftParams);
     lead_.reset();
   }
 
   std::optional<Polynomial> verified(Polynomial candidate) {
     if (options_.tamper_candidate) options_.tamper_candidate(candidate);
     if (rejected_ && candidate == *rejected_) return std::nullopt;  // the same wrong answer again
-    const auto verify_start = Clock::now();
+    const Stopwatch verify_timer;
     const bool vanishes = substitutes_to_zero(candidate, parametrization_, forms_.exact, options_.budget);
-    stats_.verify_ms += ms_since(verify_start);
+    stats_.verify_ms += verify_timer.elapsed_ms();
     if (vanishes) return candidate;
     ++stats_.rejected_candidates;
     rejected_ = std::move(candidate);
@@ -887,7 +738,7 @@ class InterpolationDriver {
   std::int32_t estimate_ = 0;        // the largest degree read from a non-zero kernel (0: none)
   std::size_t estimate_probes_ = 0;  // kernels above estimate_ that read it
   std::int32_t lift_degree_ = 0;
-  std::optional<RationalLift> lift_;
+  std::optional<CrtLift> lift_;
   std::optional<std::size_t> lead_;
   std::optional<Polynomial> rejected_;
 };

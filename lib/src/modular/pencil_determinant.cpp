@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "implicitizer/modular/crt_lift.hpp"
 #include "implicitizer/modular/flint_handles.hpp"
 #include "implicitizer/modular/one_per_thread.hpp"
 
@@ -47,17 +48,15 @@ class ModularPencil {
         divisor_(minor.size(), minor.size(), p) {
     nmod_init(&mod_, p);
     reduced_.resize((k_ + 1) * n_ * n_);
-    fmpz_t c;
-    fmpz_init(c);
+    Fmpz c;
     for (std::size_t part = 0; part <= k_; ++part) {
       for (std::size_t r = 0; r < n_; ++r) {
         for (std::size_t col = 0; col < n_; ++col) {
-          fmpz_set_mpz(c, pencil.at(part, r, col).get_mpz_t());
-          reduced_[(part * n_ + r) * n_ + col] = fmpz_fdiv_ui(c, p);
+          fmpz_set_mpz(c.get(), pencil.at(part, r, col).get_mpz_t());
+          reduced_[(part * n_ + r) * n_ + col] = fmpz_fdiv_ui(c.get(), p);
         }
       }
     }
-    fmpz_clear(c);
     // Which parts are non-zero per entry, so that sparse pencils (Macaulay's
     // matrix) evaluate in time proportional to their non-zeros.
     for (std::size_t part = 1; part <= k_; ++part) {
@@ -258,53 +257,17 @@ std::optional<std::vector<mp_limb_t>> image_modulo(const MatrixPencil& pencil, c
   return image;
 }
 
-// The least prime residues modulo their product: fmpz values in symmetric range.
-class CrtAccumulator {
- public:
-  explicit CrtAccumulator(std::size_t count) : values_(count) {
-    for (auto& v : values_) fmpz_init(&v);
-    fmpz_init_set_ui(modulus_, 1);
-    fmpz_init(scratch_);
-  }
-  ~CrtAccumulator() {
-    for (auto& v : values_) fmpz_clear(&v);
-    fmpz_clear(modulus_);
-    fmpz_clear(scratch_);
-  }
-  CrtAccumulator(const CrtAccumulator&) = delete;
-  CrtAccumulator& operator=(const CrtAccumulator&) = delete;
-
-  // Adds the residues modulo p; returns whether any value changed.
-  bool add(const std::vector<mp_limb_t>& residues, mp_limb_t p) {
-    bool changed = false;
-    for (std::size_t i = 0; i < values_.size(); ++i) {
-      fmpz_CRT_ui(scratch_, &values_[i], modulus_, residues[i], p, /*sign=*/1);
-      if (!fmpz_equal(scratch_, &values_[i])) {
-        changed = true;
-        fmpz_swap(scratch_, &values_[i]);
-      }
-    }
-    fmpz_mul_ui(modulus_, modulus_, p);
-    return changed;
-  }
-  std::size_t modulus_bits() const { return fmpz_bits(modulus_); }
-  const fmpz* value(std::size_t i) const { return &values_[i]; }
-
- private:
-  std::vector<fmpz> values_;
-  fmpz_t modulus_;
-  fmpz_t scratch_;
-};
-
 }  // namespace
 
 Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, const PencilDeterminantParams& options,
                               PencilDeterminantStats* stats_out) {
   const std::size_t k = pencil.num_variables();
-  if (ring->num_variables() != k) throw std::invalid_argument("pencil_determinant: ring and pencil differ in variables");
+  if (ring->num_variables() != k)
+    throw std::invalid_argument("pencil_determinant: ring and pencil differ in variables");
   if (options.degree_bound < 0) throw std::invalid_argument("pencil_determinant: negative degree bound");
   for (std::size_t i = 0; i < options.divisor_minor.size(); ++i) {
-    if (options.divisor_minor[i] >= pencil.size() || (i > 0 && options.divisor_minor[i] <= options.divisor_minor[i - 1])) {
+    if (options.divisor_minor[i] >= pencil.size() ||
+        (i > 0 && options.divisor_minor[i] <= options.divisor_minor[i - 1])) {
       throw std::invalid_argument("pencil_determinant: the divisor minor's indices must increase within the matrix");
     }
   }
@@ -319,14 +282,15 @@ Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, c
   // The answer has at most one term per monomial of the lattice: the size limit
   // applies before any work.
   options.budget.check_terms(support.flat.size(), "determinant");
-  CrtAccumulator crt(support.flat.size());
+  CrtLift crt(support.flat.size());
   PrimeSequence primes = options.primes;
   // A second thread pays only when a prime takes longer than starting one: on a
   // busy machine a new thread can wait a scheduler tick (about 4 ms, measured), so
   // below ~3·10⁶ operations per prime (a few ms) the primes run in this thread.
   const double operations_per_prime =
       static_cast<double>(support.flat.size()) * static_cast<double>(pencil.size() * pencil.size() * pencil.size()) / 3;
-  const unsigned automatic_threads = operations_per_prime < 3e6 ? 1u : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned automatic_threads =
+      operations_per_prime < 3e6 ? 1u : std::max(1u, std::thread::hardware_concurrency());
   const unsigned threads = std::max(1u, options.threads != 0 ? options.threads : automatic_threads);
 
   std::size_t stable = 0;
@@ -370,10 +334,8 @@ Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, c
   const std::size_t w = ring->monomial_size();
   std::vector<std::int32_t> encoded(w);
   for (std::size_t s = 0; s < support.flat.size(); ++s) {
-    const fmpz* c = crt.value(s);
-    if (fmpz_is_zero(c)) continue;
-    Integer value;
-    fmpz_get_mpz(value.get_mpz_t(), c);
+    Integer value = crt.integer(s);
+    if (value == 0) continue;
     coefficients.push_back(std::move(value));
     ring->encode(support.exponents[s].data(), encoded.data());
     monomials.insert(monomials.end(), encoded.begin(), encoded.end());

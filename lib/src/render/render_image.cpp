@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <exception>
 #include <mutex>
@@ -11,6 +10,7 @@
 
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/core/memory_account.hpp"
+#include "implicitizer/core/stopwatch.hpp"
 
 namespace implicitizer {
 namespace {
@@ -145,7 +145,7 @@ RenderResult render_image(const RenderTarget& target, const RenderParams& settin
   if (settings.width > 16384 || settings.height > 16384 || settings.width * settings.height > (std::size_t{1} << 26)) {
     throw InputError("invalid_size", "at most 16384 pixels a side and 2^26 pixels in all").in_field("size");
   }
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch timer;
   RenderResult result;
   result.image = Image(settings.width, settings.height);  // sizes checked by the camera below
   TileRenderer renderer(target, settings, budget, result.image);
@@ -180,7 +180,7 @@ RenderResult render_image(const RenderTarget& target, const RenderParams& settin
     s.shading_evaluations += w.shading_evaluations;
     s.max_evaluations = std::max(s.max_evaluations, w.max_evaluations);
   }
-  s.elapsed_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  s.elapsed_ms = timer.elapsed_ms();
   return result;
 }
 

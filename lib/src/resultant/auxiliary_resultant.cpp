@@ -1,9 +1,9 @@
 #include "implicitizer/resultant/auxiliary_resultant.hpp"
 
-#include <chrono>
 #include <optional>
 #include <stdexcept>
 
+#include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/resultant/dixon.hpp"
 #include "implicitizer/resultant/macaulay.hpp"
 
@@ -22,12 +22,6 @@ const char* to_string(AuxiliaryFormulation formulation) {
 }
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // A candidate formulation: its pencil, minor and degree bound.
 struct Candidate {
@@ -51,7 +45,7 @@ double AuxiliaryResultantPlan::predicted_operations() const {
 
 AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>& input,
                                                 const AuxiliaryResultantParams& options) {
-  const auto start = Clock::now();
+  const Stopwatch timer;
   // One common integer factor for ω, ξ, η, ζ (the resultant changes by a constant).
   std::array<Polynomial, 4> wxyz = input;
   scale_to_integers(wxyz);
@@ -79,8 +73,8 @@ AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>&
     }
     if (macaulay_size <= kMaxResultantMatrixSize) {
       MacaulayPencil macaulay = macaulay_pencil(wxyz, d);
-      candidates.push_back({AuxiliaryFormulation::macaulay, std::move(macaulay.matrix),
-                            std::move(macaulay.extraneous), d * d});
+      candidates.push_back(
+          {AuxiliaryFormulation::macaulay, std::move(macaulay.matrix), std::move(macaulay.extraneous), d * d});
     } else {
       stats.matrix_too_large = true;
     }
@@ -119,7 +113,7 @@ AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>&
     plan.matrix = std::move(c.matrix);
     plan.minor = std::move(c.minor);
   }
-  stats.construction_ms = ms_since(start);
+  stats.construction_ms = timer.elapsed_ms();
   return plan;
 }
 
@@ -135,9 +129,9 @@ AuxiliaryResultant compute_auxiliary_resultant(const AuxiliaryResultantPlan& pla
   determinant.threads = options.threads;
   determinant.stable_primes = options.stable_primes;
   determinant.budget = options.budget;
-  const auto determinant_start = Clock::now();
+  const Stopwatch determinant_timer;
   result.resultant = pencil_determinant(plan.matrix, space, determinant, &result.stats.determinant);
-  result.stats.determinant_ms = ms_since(determinant_start);
+  result.stats.determinant_ms = determinant_timer.elapsed_ms();
   return result;
 }
 

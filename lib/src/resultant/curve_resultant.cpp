@@ -1,17 +1,10 @@
 #include "implicitizer/resultant/curve_resultant.hpp"
 
-#include <chrono>
 #include <stdexcept>
 
+#include "implicitizer/core/stopwatch.hpp"
+
 namespace implicitizer {
-
-namespace {
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 MatrixPencil curve_sylvester_pencil(const std::array<Polynomial, 3>& wxy) {
   std::int32_t n = 0;
@@ -42,7 +35,7 @@ MatrixPencil curve_sylvester_pencil(const std::array<Polynomial, 3>& wxy) {
 
 AuxiliaryResultant curve_auxiliary_resultant(const std::array<Polynomial, 3>& input, const RingPtr& plane,
                                              const AuxiliaryResultantParams& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch timer;
   if (plane->num_variables() != 2) throw std::invalid_argument("curve_auxiliary_resultant: the plane ring needs x, y");
   // One common integer factor for ω, ξ, η (the resultant changes by a constant).
   std::array<Polynomial, 3> wxy = input;
@@ -56,15 +49,15 @@ AuxiliaryResultant curve_auxiliary_resultant(const std::array<Polynomial, 3>& in
   const MatrixPencil pencil = curve_sylvester_pencil(wxy);
   stats.matrix_size = pencil.size();
   stats.degree_bound = stats.total_degree;
-  stats.construction_ms = ms_since(start);
+  stats.construction_ms = timer.elapsed_ms();
   PencilDeterminantParams determinant;
   determinant.degree_bound = stats.degree_bound;
   determinant.proven_bits = pencil.determinant_coefficient_bits();
   determinant.threads = options.threads;
   determinant.budget = options.budget;
-  const auto determinant_start = std::chrono::steady_clock::now();
+  const Stopwatch determinant_timer;
   result.resultant = pencil_determinant(pencil, plane, determinant, &stats.determinant);
-  stats.determinant_ms = ms_since(determinant_start);
+  stats.determinant_ms = determinant_timer.elapsed_ms();
   return result;
 }
 

@@ -1,10 +1,11 @@
 #pragma once
 /// \file
-/// RAII owners of FLINT's integers, integer polynomials and matrices modulo a word
-/// prime: one set for every module that calls FLINT directly (the modular Gröbner
+/// RAII owners of FLINT's integers, rationals, integer polynomials and matrices
+/// modulo a word prime: one set for every module that calls FLINT directly (the modular Gröbner
 /// bases, the resultant's determinants, interpolation, the renderer's exact root
 /// isolation), so that each value is cleared exactly once.
 
+#include <flint/fmpq.h>
 #include <flint/fmpz.h>
 #include <flint/fmpz_poly.h>
 #include <flint/nmod_mat.h>
@@ -13,7 +14,8 @@
 
 namespace implicitizer {
 
-/// An fmpz_t, initialized to 0; copies are deep.
+/// An fmpz_t, initialized to 0; copies are deep, moves swap (so that vectors of them
+/// grow without copying the digits).
 class Fmpz {
  public:
   Fmpz() { fmpz_init(v_); }
@@ -22,8 +24,16 @@ class Fmpz {
     fmpz_init(v_);
     fmpz_set(v_, other.v_);
   }
+  Fmpz(Fmpz&& other) noexcept {
+    fmpz_init(v_);
+    fmpz_swap(v_, other.v_);
+  }
   Fmpz& operator=(const Fmpz& other) {
     fmpz_set(v_, other.v_);
+    return *this;
+  }
+  Fmpz& operator=(Fmpz&& other) noexcept {
+    fmpz_swap(v_, other.v_);
     return *this;
   }
   /// The FLINT value.
@@ -33,6 +43,30 @@ class Fmpz {
 
  private:
   fmpz_t v_;
+};
+
+/// An fmpq_t, initialized to 0/1; moves swap, no copies.
+class Fmpq {
+ public:
+  Fmpq() { fmpq_init(v_); }
+  ~Fmpq() { fmpq_clear(v_); }
+  Fmpq(const Fmpq&) = delete;
+  Fmpq(Fmpq&& other) noexcept {
+    fmpq_init(v_);
+    fmpq_swap(v_, other.v_);
+  }
+  Fmpq& operator=(const Fmpq&) = delete;
+  Fmpq& operator=(Fmpq&& other) noexcept {
+    fmpq_swap(v_, other.v_);
+    return *this;
+  }
+  /// The FLINT value.
+  fmpq* get() { return v_; }
+  /// The FLINT value.
+  const fmpq* get() const { return v_; }
+
+ private:
+  fmpq_t v_;
 };
 
 /// An fmpz_poly_t, initialized to 0; not copyable.
