@@ -1,11 +1,11 @@
 #include "implicitizer/implicitization/implicitize.hpp"
 
-#include <chrono>
 #include <stdexcept>
 #include <string>
 
 #include "auto_rules.hpp"
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/implicitization/verify.hpp"
 #include "implicitizer/polynomial/printer.hpp"
 #include "routes.hpp"
@@ -32,8 +32,6 @@ ImplicitizationMethod parse_implicitization_method(const std::string& name) {
 }
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // Method groebner: modulo primes when asked and the proof goes through, else over ℚ.
 ImplicitizeResult by_groebner_method(const Parametrization& p, const ImplicitizeParams& params) {
@@ -83,26 +81,26 @@ ImplicitizeResult by_method(const Parametrization& p, const ImplicitizeParams& p
 
 // Verifies `result.implicit` by substitution (unless the route did) and fills the
 // fields every route shares.
-void finish(ImplicitizeResult& result, const Parametrization& p, const Budget& budget, Clock::time_point start) {
+void finish(ImplicitizeResult& result, const Parametrization& p, const Budget& budget, const Stopwatch& timer) {
   result.degree = result.implicit.total_degree();
   if (!result.verified) {
-    const auto verify_start = Clock::now();
+    const Stopwatch verify_timer;
     result.verified = substitutes_to_zero(result.implicit, p, budget);
-    result.verify_ms = std::chrono::duration<double, std::milli>(Clock::now() - verify_start).count();
+    result.verify_ms = verify_timer.elapsed_ms();
     if (!result.verified) {
       throw std::logic_error("internal error: the implicit equation " + to_string(result.implicit) +
                              " does not vanish on the parametrization");
     }
   }
-  result.elapsed_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  result.elapsed_ms = timer.elapsed_ms();
 }
 
 }  // namespace
 
 ImplicitizeResult implicitize(const Parametrization& parametrization, const ImplicitizeParams& params) {
-  const auto start = Clock::now();
+  const Stopwatch timer;
   ImplicitizeResult result = by_method(parametrization, params);
-  finish(result, parametrization, params.budget, start);
+  finish(result, parametrization, params.budget, timer);
   return result;
 }
 

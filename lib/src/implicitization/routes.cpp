@@ -1,10 +1,10 @@
 #include "routes.hpp"
 
-#include <chrono>
 #include <span>
 #include <stdexcept>
 
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/core/try_within.hpp"
 #include "implicitizer/groebner/elimination.hpp"
 #include "implicitizer/implicitization/verify.hpp"
@@ -15,8 +15,6 @@
 namespace implicitizer {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // A name for the saturation variable that no parameter uses.
 std::string fresh_name(const Ring& params) {
@@ -128,11 +126,11 @@ std::optional<ImplicitizeResult> modular_groebner_route(const Parametrization& p
   ImplicitizeResult result;
   const std::size_t identity[3] = {0, 1, 2};
   result.implicit = elimination.elimination.front().map_to(implicit_ring(n), std::span(identity, n)).primitive_part();
-  const auto verify_start = Clock::now();
+  const Stopwatch verify_timer;
   InterpolationParams check;
   check.budget = params.budget;
   const ImplicitEquationCheck proof = check_implicit_equation(result.implicit, p, check);
-  result.verify_ms = std::chrono::duration<double, std::milli>(Clock::now() - verify_start).count();
+  result.verify_ms = verify_timer.elapsed_ms();
   if (!proof.vanishes || !proof.minimal) return std::nullopt;
   result.verified = true;
   result.method = "groebner";
@@ -190,9 +188,9 @@ std::optional<ImplicitizeResult> from_resultant(const Parametrization& p, const 
     // Theorem 1.12: Res_aux is exactly c·f^l.
     const bool is_power =
         result.implicit.pow(static_cast<unsigned>(result.map_degree), budget).primitive_part() == r.primitive_part();
-    const auto verify_start = Clock::now();
+    const Stopwatch verify_timer;
     result.verified = is_power && substitutes_to_zero(result.implicit, p, budget);
-    result.verify_ms = std::chrono::duration<double, std::milli>(Clock::now() - verify_start).count();
+    result.verify_ms = verify_timer.elapsed_ms();
     if (result.verified) return result;
     if (aux.stats.determinant.proven) break;  // exact by construction: retrying cannot help
   }

@@ -1,12 +1,12 @@
 #include "implicitizer/service/groebner_request.hpp"
 
-#include <chrono>
 #include <cstddef>
 #include <memory>
 #include <string>
 #include <utility>
 
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/groebner/elimination.hpp"
 #include "implicitizer/polynomial/expression.hpp"
 #include "implicitizer/polynomial/parser.hpp"
@@ -109,7 +109,7 @@ void answer_elimination(const GroebnerRequest& request, const std::vector<Polyno
 
 GroebnerAnswer answer_groebner_request(const GroebnerRequest& request, Budget budget,
                                        const BuchbergerVariant& variant) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch timer;
   if (request.polynomials.empty()) {
     throw InputError("empty_input", "no polynomials given").in_field("polynomials");
   }
@@ -130,7 +130,7 @@ GroebnerAnswer answer_groebner_request(const GroebnerRequest& request, Budget bu
     answer.stats = result.stats;
     answer.order = order.name();
   }
-  answer.elapsed_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  answer.elapsed_ms = timer.elapsed_ms();
   return answer;
 }
 

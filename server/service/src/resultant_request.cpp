@@ -1,10 +1,10 @@
 #include "implicitizer/service/resultant_request.hpp"
 
-#include <chrono>
 #include <memory>
 #include <utility>
 
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/polynomial/expression.hpp"
 #include "implicitizer/polynomial/parser.hpp"
 #include "implicitizer/polynomial/ring.hpp"
@@ -18,7 +18,7 @@ std::string polynomial_field(std::size_t i) { return "polynomials[" + std::to_st
 }  // namespace
 
 ResultantAnswer answer_resultant_request(const ResultantRequest& request, Budget budget) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch timer;
   if (request.polynomials.size() != 2) {
     throw InputError("wrong_number_of_polynomials", "a resultant needs exactly two polynomials, F and G (got " +
                                                         std::to_string(request.polynomials.size()) + ")")
@@ -62,7 +62,7 @@ ResultantAnswer answer_resultant_request(const ResultantRequest& request, Budget
     if (name != request.variable) answer.variables.push_back(name);
   }
   answer.degree = answer.resultant.total_degree();
-  answer.elapsed_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  answer.elapsed_ms = timer.elapsed_ms();
   return answer;
 }
 
