@@ -4,7 +4,8 @@
 /// leaf (where `exact` cannot run): the first sign change of the scene's value
 /// along the ray, bracketed by marching with steps bounded by the safe value, then
 /// bisected to 1e-12 relative. Test support shared by tests/render/ and the
-/// benchmark bench/render_accuracy.cpp (header-only, as tests/sdf/reference_distance.hpp).
+/// benchmark bench/render_accuracy.cpp (header-only: one short function, unlike the
+/// compiled reference distance of tests/sdf/).
 ///
 /// Why the safe value: in safe mode a compiled scene's value v satisfies
 /// v(p) > 0 ⇒ v(p) ≤ dist(p, {v ≤ 0}) (compiled_scene.hpp), so a step of v from a

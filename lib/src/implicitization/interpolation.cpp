@@ -306,6 +306,30 @@ struct KernelImage {
   std::size_t rejected_points = 0;  // points where ω vanished
 };
 
+// The kernel of a matrix in reduced row echelon form (FLINT's nmod_mat_rref) with
+// one free column f: v_f = 1 and, for the pivot c of row r, v_c = −R[r][f] / R[r][c]
+// (a reduced row holds only its pivot and free entries).
+std::vector<mp_limb_t> kernel_vector_of_rref(const nmod_mat_struct* matrix, std::size_t rank, std::size_t columns,
+                                             nmod_t mod) {
+  std::vector<std::size_t> pivots(rank);
+  std::vector<char> is_pivot(columns, 0);
+  for (std::size_t r = 0, c = 0; r < rank; ++r) {
+    while (nmod_mat_entry(matrix, r, c) == 0) ++c;
+    pivots[r] = c;
+    is_pivot[c] = 1;
+  }
+  const std::size_t free_column =
+      static_cast<std::size_t>(std::find(is_pivot.begin(), is_pivot.end(), 0) - is_pivot.begin());
+  std::vector<mp_limb_t> vector(columns, 0);
+  vector[free_column] = 1;
+  for (std::size_t r = 0; r < rank; ++r) {
+    const mp_limb_t entry = nmod_mat_entry(matrix, r, free_column);
+    const mp_limb_t pivot = nmod_mat_entry(matrix, r, pivots[r]);
+    vector[pivots[r]] = nmod_neg(nmod_mul(entry, n_invmod(pivot, mod.n), mod), mod);
+  }
+  return vector;
+}
+
 // The kernel modulo p of the matrix whose rows are the monomials of `basis` at
 // points ξ(a)/ω(a) of the image, a random with ω(a) ≢ 0 and pairwise distinct.
 // Checks `budget` at every row; FLINT's row reduction itself cannot be interrupted.
@@ -356,24 +380,7 @@ KernelImage kernel_modulo(const MapForms& forms, const MonomialBasis& basis, mp_
   const std::size_t rank = static_cast<std::size_t>(nmod_mat_rref(matrix.get()));
   out.nullity = columns - rank;
   if (out.nullity != 1) return out;
-  // One free column f: the kernel vector has v_f = 1 and, for the pivot c of row r,
-  // v_c = −R[r][f] / R[r][c] (a reduced row holds only its pivot and free entries).
-  std::vector<std::size_t> pivots(rank);
-  std::vector<char> is_pivot(columns, 0);
-  for (std::size_t r = 0, c = 0; r < rank; ++r) {
-    while (nmod_mat_entry(matrix.get(), r, c) == 0) ++c;
-    pivots[r] = c;
-    is_pivot[c] = 1;
-  }
-  const std::size_t free_column =
-      static_cast<std::size_t>(std::find(is_pivot.begin(), is_pivot.end(), 0) - is_pivot.begin());
-  out.vector.assign(columns, 0);
-  out.vector[free_column] = 1;
-  for (std::size_t r = 0; r < rank; ++r) {
-    const mp_limb_t entry = nmod_mat_entry(matrix.get(), r, free_column);
-    const mp_limb_t pivot = nmod_mat_entry(matrix.get(), r, pivots[r]);
-    out.vector[pivots[r]] = nmod_neg(nmod_mul(entry, n_invmod(pivot, p), mod), mod);
-  }
+  out.vector = kernel_vector_of_rref(matrix.get(), rank, columns, mod);
   out.lead = static_cast<std::size_t>(
       std::find_if(out.vector.begin(), out.vector.end(), [](mp_limb_t v) { return v != 0; }) - out.vector.begin());
   const mp_limb_t inverse = n_invmod(out.vector[out.lead], p);

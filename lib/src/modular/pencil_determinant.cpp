@@ -148,19 +148,10 @@ DenseSupport support_of(std::size_t k, std::size_t points, std::int32_t degree_b
 // differences only look at the values before them. Each Q_k is then a problem of
 // the same shape with degree D − k, one dimension lower. Finally the Newton
 // coefficients are converted to monomial ones along each axis (Horner).
-std::optional<std::vector<mp_limb_t>> image_modulo(const MatrixPencil& pencil, const PencilDeterminantParams& options,
-                                                   const DenseSupport& support, mp_limb_t p, std::uint64_t seed,
-                                                   std::size_t& evaluations) {
-  const std::size_t k = pencil.num_variables();
-  const std::int32_t degree = options.degree_bound;
-  const std::size_t points = static_cast<std::size_t>(degree) + 1;
-  ModularPencil modular(pencil, options.divisor_minor, p);
-  nmod_t mod;
-  nmod_init(&mod, p);
-
-  // Distinct random nodes per variable: random rather than 0, 1, 2, … so that no
-  // structure of the input (a minor that vanishes at u = 0) meets the lattice.
-  ResidueStream stream(seed ^ p);
+// Distinct random nodes per variable: random rather than 0, 1, 2, … so that no
+// structure of the input (a minor that vanishes at u = 0) meets the lattice.
+std::vector<std::vector<mp_limb_t>> random_nodes(ResidueStream& stream, std::size_t k, std::size_t points,
+                                                 mp_limb_t p) {
   std::vector<std::vector<mp_limb_t>> nodes(k);
   for (auto& list : nodes) {
     while (list.size() < points) {
@@ -168,23 +159,20 @@ std::optional<std::vector<mp_limb_t>> image_modulo(const MatrixPencil& pencil, c
       if (std::find(list.begin(), list.end(), v) == list.end()) list.push_back(v);
     }
   }
-  std::vector<std::size_t> stride(k, 1);
-  for (std::size_t v = k; v-- > 1;) stride[v - 1] = stride[v] * points;
+  return nodes;
+}
 
-  std::vector<mp_limb_t> values(stride.empty() ? 1 : stride[0] * points);
-  std::vector<mp_limb_t> u(k);
-  for (std::size_t s = 0; s < support.flat.size(); ++s) {
-    if (s % points == 0) options.budget.check("determinant evaluation");
-    for (std::size_t v = 0; v < k; ++v) u[v] = nodes[v][static_cast<std::size_t>(support.exponents[s][v])];
-    const auto value = modular.evaluate(u.data());
-    ++evaluations;
-    if (!value) return std::nullopt;
-    values[support.flat[s]] = *value;
-  }
+// The values on the principal lattice, stored densely with `stride`, and its lines.
+struct LatticeValues {
+  const DenseSupport& support;
+  std::int32_t degree;
+  std::vector<std::size_t> stride;
+  std::vector<mp_limb_t> values;
 
-  // The lines along `axis`: every support point with index 0 on the axis starts
-  // one, of length D − (sum of its other indices) + 1.
-  auto for_each_line = [&](std::size_t axis, auto&& f) {
+  // The lines along `axis`: every support point with index 0 on the axis starts one,
+  // of length D − (sum of its other indices) + 1; f(base, length).
+  template <typename F>
+  void for_each_line(std::size_t axis, F&& f) const {
     for (std::size_t s = 0; s < support.flat.size(); ++s) {
       const auto& e = support.exponents[s];
       if (e[axis] != 0) continue;
@@ -192,77 +180,113 @@ std::optional<std::vector<mp_limb_t>> image_modulo(const MatrixPencil& pencil, c
       for (std::int32_t x : e) others += x;
       f(support.flat[s], static_cast<std::size_t>(degree - others) + 1);
     }
-  };
+  }
+};
 
-  std::vector<mp_limb_t> line(points), next(points);
-  for (std::size_t axis = k; axis-- > 0;) {
-    const auto& x = nodes[axis];
-    const std::size_t st = stride[axis];
-    // Divided differences, in place: level l turns c_i into f[x_{i−l}, …, x_i].
-    for_each_line(axis, [&](std::size_t base, std::size_t n) {
-      for (std::size_t i = 0; i < n; ++i) line[i] = values[base + i * st];
-      for (std::size_t l = 1; l < n; ++l) {
-        for (std::size_t i = n - 1; i >= l; --i) {
-          const mp_limb_t difference = nmod_sub(line[i], line[i - 1], mod);
-          line[i] = nmod_mul(difference, n_invmod(nmod_sub(x[i], x[i - l], mod), p), mod);
-        }
+// Divided differences along `x`'s axis, in place: level l turns c_i into
+// f[x_{i−l}, …, x_i].
+void divided_differences_along(LatticeValues& lattice, std::size_t axis, const std::vector<mp_limb_t>& x, nmod_t mod) {
+  const std::size_t st = lattice.stride[axis];
+  std::vector<mp_limb_t> line(x.size());
+  lattice.for_each_line(axis, [&](std::size_t base, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) line[i] = lattice.values[base + i * st];
+    for (std::size_t l = 1; l < n; ++l) {
+      for (std::size_t i = n - 1; i >= l; --i) {
+        const mp_limb_t difference = nmod_sub(line[i], line[i - 1], mod);
+        line[i] = nmod_mul(difference, n_invmod(nmod_sub(x[i], x[i - l], mod), mod.n), mod);
       }
-      for (std::size_t i = 0; i < n; ++i) values[base + i * st] = line[i];
-    });
+    }
+    for (std::size_t i = 0; i < n; ++i) lattice.values[base + i * st] = line[i];
+  });
+}
+
+// Newton to monomial coefficients along `x`'s axis, by Horner: q ← q·(x − x_j) + c_j
+// for j = n−2, …, 0.
+void newton_to_monomial_along(LatticeValues& lattice, std::size_t axis, const std::vector<mp_limb_t>& x, nmod_t mod) {
+  const std::size_t st = lattice.stride[axis];
+  std::vector<mp_limb_t> line(x.size()), next(x.size());
+  lattice.for_each_line(axis, [&](std::size_t base, std::size_t n) {
+    std::fill(line.begin(), line.begin() + static_cast<std::ptrdiff_t>(n), 0);
+    line[0] = lattice.values[base + (n - 1) * st];
+    for (std::size_t j = n - 1; j-- > 0;) {
+      const std::size_t length = n - 1 - j;  // current degree + 1
+      next[0] = 0;
+      for (std::size_t t = 0; t <= length; ++t) {
+        const mp_limb_t shifted = t > 0 ? line[t - 1] : 0;
+        const mp_limb_t kept = t < length ? nmod_mul(line[t], x[j], mod) : 0;
+        next[t] = nmod_sub(shifted, kept, mod);
+      }
+      next[0] = nmod_add(next[0], lattice.values[base + j * st], mod);
+      std::copy(next.begin(), next.begin() + static_cast<std::ptrdiff_t>(length + 1), line.begin());
+    }
+    for (std::size_t i = 0; i < n; ++i) lattice.values[base + i * st] = line[i];
+  });
+}
+
+// The polynomial with coefficients `image` on `support` at the point u.
+mp_limb_t evaluate_image(const std::vector<mp_limb_t>& image, const DenseSupport& support,
+                         const std::vector<mp_limb_t>& u, std::size_t points, nmod_t mod) {
+  const std::size_t k = u.size();
+  std::vector<std::vector<mp_limb_t>> powers(k, std::vector<mp_limb_t>(points, 1));
+  for (std::size_t v = 0; v < k; ++v) {
+    for (std::size_t e = 1; e < points; ++e) powers[v][e] = nmod_mul(powers[v][e - 1], u[v], mod);
+  }
+  mp_limb_t sum = 0;
+  for (std::size_t s = 0; s < image.size(); ++s) {
+    mp_limb_t term = image[s];
+    for (std::size_t v = 0; v < k; ++v) {
+      term = nmod_mul(term, powers[v][static_cast<std::size_t>(support.exponents[s][v])], mod);
+    }
+    sum = nmod_add(sum, term, mod);
+  }
+  return sum;
+}
+
+std::optional<std::vector<mp_limb_t>> image_modulo(const MatrixPencil& pencil, const PencilDeterminantParams& options,
+                                                   const DenseSupport& support, mp_limb_t p, std::uint64_t seed,
+                                                   std::size_t& evaluations) {
+  const std::size_t k = pencil.num_variables();
+  const std::size_t points = static_cast<std::size_t>(options.degree_bound) + 1;
+  ModularPencil modular(pencil, options.divisor_minor, p);
+  nmod_t mod;
+  nmod_init(&mod, p);
+  ResidueStream stream(seed ^ p);
+  const std::vector<std::vector<mp_limb_t>> nodes = random_nodes(stream, k, points, p);
+
+  LatticeValues lattice{support, options.degree_bound, std::vector<std::size_t>(k, 1), {}};
+  for (std::size_t v = k; v-- > 1;) lattice.stride[v - 1] = lattice.stride[v] * points;
+  lattice.values.resize(lattice.stride.empty() ? 1 : lattice.stride[0] * points);
+  std::vector<mp_limb_t> u(k);
+  for (std::size_t s = 0; s < support.flat.size(); ++s) {
+    if (s % points == 0) options.budget.check("determinant evaluation");
+    for (std::size_t v = 0; v < k; ++v) u[v] = nodes[v][static_cast<std::size_t>(support.exponents[s][v])];
+    const auto value = modular.evaluate(u.data());
+    ++evaluations;
+    if (!value) return std::nullopt;
+    lattice.values[support.flat[s]] = *value;
+  }
+  for (std::size_t axis = k; axis-- > 0;) {
+    divided_differences_along(lattice, axis, nodes[axis], mod);
     options.budget.check("determinant interpolation");
   }
-  for (std::size_t axis = 0; axis < k; ++axis) {
-    const auto& x = nodes[axis];
-    const std::size_t st = stride[axis];
-    // Newton to monomial by Horner: q ← q·(x − x_j) + c_j for j = n−2, …, 0.
-    for_each_line(axis, [&](std::size_t base, std::size_t n) {
-      std::fill(line.begin(), line.begin() + static_cast<std::ptrdiff_t>(n), 0);
-      line[0] = values[base + (n - 1) * st];
-      for (std::size_t j = n - 1; j-- > 0;) {
-        const std::size_t length = n - 1 - j;  // current degree + 1
-        next[0] = 0;
-        for (std::size_t t = 0; t <= length; ++t) {
-          const mp_limb_t shifted = t > 0 ? line[t - 1] : 0;
-          const mp_limb_t kept = t < length ? nmod_mul(line[t], x[j], mod) : 0;
-          next[t] = nmod_sub(shifted, kept, mod);
-        }
-        next[0] = nmod_add(next[0], values[base + j * st], mod);
-        std::copy(next.begin(), next.begin() + static_cast<std::ptrdiff_t>(length + 1), line.begin());
-      }
-      for (std::size_t i = 0; i < n; ++i) values[base + i * st] = line[i];
-    });
-  }
+  for (std::size_t axis = 0; axis < k; ++axis) newton_to_monomial_along(lattice, axis, nodes[axis], mod);
 
   // One check point off the lattice: the interpolant agrees with the determinant
   // there unless the degree bound was wrong (the lattice alone cannot tell).
   for (auto& v : u) v = stream.next(p);
   std::vector<mp_limb_t> image(support.flat.size());
-  for (std::size_t s = 0; s < image.size(); ++s) image[s] = values[support.flat[s]];
+  for (std::size_t s = 0; s < image.size(); ++s) image[s] = lattice.values[support.flat[s]];
   if (const auto check = modular.evaluate(u.data())) {
     ++evaluations;
-    std::vector<std::vector<mp_limb_t>> powers(k, std::vector<mp_limb_t>(points, 1));
-    for (std::size_t v = 0; v < k; ++v) {
-      for (std::size_t e = 1; e < points; ++e) powers[v][e] = nmod_mul(powers[v][e - 1], u[v], mod);
+    if (evaluate_image(image, support, u, points, mod) != *check) {
+      throw std::logic_error("pencil_determinant: the determinant exceeds its degree bound");
     }
-    mp_limb_t sum = 0;
-    for (std::size_t s = 0; s < image.size(); ++s) {
-      mp_limb_t term = image[s];
-      for (std::size_t v = 0; v < k; ++v) {
-        term = nmod_mul(term, powers[v][static_cast<std::size_t>(support.exponents[s][v])], mod);
-      }
-      sum = nmod_add(sum, term, mod);
-    }
-    if (sum != *check) throw std::logic_error("pencil_determinant: the determinant exceeds its degree bound");
   }
   return image;
 }
 
-}  // namespace
-
-Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, const PencilDeterminantParams& options,
-                              PencilDeterminantStats* stats_out) {
-  const std::size_t k = pencil.num_variables();
-  if (ring->num_variables() != k)
+void check_arguments(const MatrixPencil& pencil, const RingPtr& ring, const PencilDeterminantParams& options) {
+  if (ring->num_variables() != pencil.num_variables())
     throw std::invalid_argument("pencil_determinant: ring and pencil differ in variables");
   if (options.degree_bound < 0) throw std::invalid_argument("pencil_determinant: negative degree bound");
   for (std::size_t i = 0; i < options.divisor_minor.size(); ++i) {
@@ -271,6 +295,40 @@ Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, c
       throw std::invalid_argument("pencil_determinant: the divisor minor's indices must increase within the matrix");
     }
   }
+}
+
+// A second thread pays only when a prime takes longer than starting one: on a busy
+// machine a new thread can wait a scheduler tick (about 4 ms, measured), so below
+// ~3·10⁶ operations per prime (a few ms) the primes run in this thread.
+unsigned threads_for(const MatrixPencil& pencil, const DenseSupport& support, const PencilDeterminantParams& options) {
+  const double operations_per_prime =
+      static_cast<double>(support.flat.size()) * static_cast<double>(pencil.size() * pencil.size() * pencil.size()) / 3;
+  const unsigned automatic_threads =
+      operations_per_prime < 3e6 ? 1u : std::max(1u, std::thread::hardware_concurrency());
+  return std::max(1u, options.threads != 0 ? options.threads : automatic_threads);
+}
+
+// The polynomial whose coefficients on `support` are the lifted integers.
+Polynomial polynomial_of(const CrtLift& crt, const DenseSupport& support, const RingPtr& ring) {
+  std::vector<Integer> coefficients;
+  std::vector<std::int32_t> monomials;
+  std::vector<std::int32_t> encoded(ring->monomial_size());
+  for (std::size_t s = 0; s < support.flat.size(); ++s) {
+    Integer value = crt.integer(s);
+    if (value == 0) continue;
+    coefficients.push_back(std::move(value));
+    ring->encode(support.exponents[s].data(), encoded.data());
+    monomials.insert(monomials.end(), encoded.begin(), encoded.end());
+  }
+  return Polynomial::from_terms(ring, Rational(1), std::move(coefficients), std::move(monomials));
+}
+
+}  // namespace
+
+Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, const PencilDeterminantParams& options,
+                              PencilDeterminantStats* stats_out) {
+  check_arguments(pencil, ring, options);
+  const std::size_t k = pencil.num_variables();
   PencilDeterminantStats stats;
   if (pencil.size() == 0) {
     if (stats_out) *stats_out = stats;
@@ -284,14 +342,7 @@ Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, c
   options.budget.check_terms(support.flat.size(), "determinant");
   CrtLift crt(support.flat.size());
   PrimeSequence primes = options.primes;
-  // A second thread pays only when a prime takes longer than starting one: on a
-  // busy machine a new thread can wait a scheduler tick (about 4 ms, measured), so
-  // below ~3·10⁶ operations per prime (a few ms) the primes run in this thread.
-  const double operations_per_prime =
-      static_cast<double>(support.flat.size()) * static_cast<double>(pencil.size() * pencil.size() * pencil.size()) / 3;
-  const unsigned automatic_threads =
-      operations_per_prime < 3e6 ? 1u : std::max(1u, std::thread::hardware_concurrency());
-  const unsigned threads = std::max(1u, options.threads != 0 ? options.threads : automatic_threads);
+  const unsigned threads = threads_for(pencil, support, options);
 
   std::size_t stable = 0;
   bool done = false;
@@ -329,19 +380,8 @@ Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, c
     }
   }
 
-  std::vector<Integer> coefficients;
-  std::vector<std::int32_t> monomials;
-  const std::size_t w = ring->monomial_size();
-  std::vector<std::int32_t> encoded(w);
-  for (std::size_t s = 0; s < support.flat.size(); ++s) {
-    Integer value = crt.integer(s);
-    if (value == 0) continue;
-    coefficients.push_back(std::move(value));
-    ring->encode(support.exponents[s].data(), encoded.data());
-    monomials.insert(monomials.end(), encoded.begin(), encoded.end());
-  }
   if (stats_out) *stats_out = stats;
-  return Polynomial::from_terms(ring, Rational(1), std::move(coefficients), std::move(monomials));
+  return polynomial_of(crt, support, ring);
 }
 
 PencilProbe probe_pencil_determinant(const MatrixPencil& pencil, const std::vector<std::size_t>& divisor_minor,

@@ -43,6 +43,38 @@ double AuxiliaryResultantPlan::predicted_operations() const {
   return points * (cube(static_cast<double>(matrix.size())) + cube(static_cast<double>(minor.size()))) / 3 * primes;
 }
 
+namespace {
+
+// Both formulations whose matrix is small enough, the smaller degree bound first;
+// marks `stats.matrix_too_large` for the others. A parametrization that does not
+// involve both parameters has m = 0 or n = 0: its image is not a surface and both
+// resultants vanish, which the caller reports.
+std::vector<Candidate> formulations(const std::array<Polynomial, 4>& wxyz, AuxiliaryResultantStats& stats) {
+  const std::int32_t m = stats.bidegree_s, n = stats.bidegree_t, d = stats.total_degree;
+  std::vector<Candidate> candidates;
+  if (m < 1 || n < 1) return candidates;
+  const auto dixon_size = static_cast<std::size_t>(2 * m * n);
+  const auto macaulay_size = static_cast<std::size_t>((3 * d - 1) * 3 * d / 2);  // C(3d, 2)
+  if (dixon_size <= kMaxResultantMatrixSize) {
+    candidates.push_back({AuxiliaryFormulation::dixon, dixon_pencil(wxyz, m, n), {}, 2 * m * n});
+  } else {
+    stats.matrix_too_large = true;
+  }
+  if (macaulay_size <= kMaxResultantMatrixSize) {
+    MacaulayPencil macaulay = macaulay_pencil(wxyz, d);
+    candidates.push_back(
+        {AuxiliaryFormulation::macaulay, std::move(macaulay.matrix), std::move(macaulay.extraneous), d * d});
+  } else {
+    stats.matrix_too_large = true;
+  }
+  if (candidates.size() == 2 && candidates[1].degree_bound < candidates[0].degree_bound) {
+    std::swap(candidates[0], candidates[1]);
+  }
+  return candidates;
+}
+
+}  // namespace
+
 AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>& input,
                                                 const AuxiliaryResultantParams& options) {
   const Stopwatch timer;
@@ -57,31 +89,7 @@ AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>&
     stats.bidegree_t = std::max(stats.bidegree_t, p.degree_in(1));
     stats.total_degree = std::max(stats.total_degree, p.total_degree());
   }
-  const std::int32_t m = stats.bidegree_s, n = stats.bidegree_t, d = stats.total_degree;
-
-  // Both formulations, the smaller degree bound first. A parametrization that does
-  // not involve both parameters has m = 0 or n = 0: its image is not a surface and
-  // both resultants vanish, which the caller reports.
-  std::vector<Candidate> candidates;
-  if (m >= 1 && n >= 1) {
-    const auto dixon_size = static_cast<std::size_t>(2 * m * n);
-    const auto macaulay_size = static_cast<std::size_t>((3 * d - 1) * 3 * d / 2);  // C(3d, 2)
-    if (dixon_size <= kMaxResultantMatrixSize) {
-      candidates.push_back({AuxiliaryFormulation::dixon, dixon_pencil(wxyz, m, n), {}, 2 * m * n});
-    } else {
-      stats.matrix_too_large = true;
-    }
-    if (macaulay_size <= kMaxResultantMatrixSize) {
-      MacaulayPencil macaulay = macaulay_pencil(wxyz, d);
-      candidates.push_back(
-          {AuxiliaryFormulation::macaulay, std::move(macaulay.matrix), std::move(macaulay.extraneous), d * d});
-    } else {
-      stats.matrix_too_large = true;
-    }
-    if (candidates.size() == 2 && candidates[1].degree_bound < candidates[0].degree_bound) {
-      std::swap(candidates[0], candidates[1]);
-    }
-  }
+  std::vector<Candidate> candidates = formulations(wxyz, stats);
   // Every formulation is probed, even after one is found usable: which of P¹×P¹ and
   // P² carry base points is worth reporting, and a probe costs one determinant. One
   // random point modulo a 62-bit prime suffices: a non-zero polynomial of degree D

@@ -59,85 +59,118 @@ std::string trim_glsl(const std::string& prefix) {
          "}\n";
 }
 
-PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& source, const SceneBox& default_box,
-                                     SdfMode mode, const Budget& budget, const std::string& field) {
-  const RingPtr ring = space_ring();
-  Polynomial f(ring);
+namespace {
+
+// A leaf's implicit equation: parsed (kind implicit) or implicitized (kind
+// parametric), with the bounds of the patch when the source gives a domain.
+struct LeafEquation {
+  Polynomial f{space_ring()};
   std::optional<PatchBounds> bounds;
+};
+
+LeafEquation implicitize_leaf(const PolynomialLeafSource& source, const Budget& budget, const std::string& field) {
+  LeafEquation out;
+  Parametrization parametrization;
+  try {
+    parametrization = parse_parametrization(source.coordinates[0], source.coordinates[1], source.coordinates[2],
+                                            source.parameter_names, budget);
+  } catch (const InputError& e) {
+    throw at_field(e, field, "x");
+  }
+  if (!source.domain.empty()) {
+    ParameterDomain domain;
+    domain.intervals = source.domain;
+    try {
+      out.bounds = bound_patch(parametrization, domain, budget);
+    } catch (const InputError& e) {
+      throw at_field(e, field, "domain");
+    }
+  }
+  ImplicitizeParams params;
+  params.budget = budget;
+  try {
+    out.f = implicitize(parametrization, params).implicit;
+  } catch (const NoSingleEquation& e) {
+    throw InputError(e.code(), std::string("the parametrization has no single implicit equation: ") + e.what())
+        .in_field(field);
+  } catch (const InputError& e) {
+    throw at_field(e, field, "x");
+  }
+  return out;
+}
+
+LeafEquation leaf_equation(NodeKind kind, const PolynomialLeafSource& source, const Budget& budget,
+                           const std::string& field) {
+  LeafEquation out;
   if (kind == NodeKind::implicit) {
     try {
-      f = parse_polynomial(source.equation, ring, budget);
+      out.f = parse_polynomial(source.equation, space_ring(), budget);
     } catch (const InputError& e) {
       throw at_field(e, field, "equation");
     }
   } else {
-    Parametrization parametrization;
-    try {
-      parametrization = parse_parametrization(source.coordinates[0], source.coordinates[1], source.coordinates[2],
-                                              source.parameter_names, budget);
-    } catch (const InputError& e) {
-      throw at_field(e, field, "x");
-    }
-    if (!source.domain.empty()) {
-      ParameterDomain domain;
-      domain.intervals = source.domain;
-      try {
-        bounds = bound_patch(parametrization, domain, budget);
-      } catch (const InputError& e) {
-        throw at_field(e, field, "domain");
-      }
-    }
-    ImplicitizeParams options;
-    options.budget = budget;
-    try {
-      f = implicitize(parametrization, options).implicit;
-    } catch (const NoSingleEquation& e) {
-      throw InputError(e.code(), std::string("the parametrization has no single implicit equation: ") + e.what())
-          .in_field(field);
-    } catch (const InputError& e) {
-      throw at_field(e, field, "x");
-    }
+    out = implicitize_leaf(source, budget, field);
   }
-  if (f.is_constant()) {
+  if (out.f.is_constant()) {
     throw InputError("constant_polynomial", "a constant polynomial has no surface")
         .in_field(field + (kind == NodeKind::implicit ? ".equation" : ""));
   }
+  return out;
+}
 
-  SceneBox frame_box = source.box ? *source.box : default_box;
+// A patch's box rounded outwards, in double and in float.
+struct TrimBox {
   Vec3<double> lo, hi;
   Vec3<float> lo_float, hi_float;
-  if (bounds) {
-    // Pad by 1e-3 of the largest side so that the patch never lies on the frame's
-    // edge; a patch whose box is a point is not a surface piece.
-    Rational largest(0);
+};
+
+// The box that trims a patch; also pads `frame_box` around it when the source gives
+// no box of its own.
+TrimBox trim_box(const PatchBounds& bounds, const PolynomialLeafSource& source, SceneBox& frame_box,
+                 const std::string& field) {
+  // Pad by 1e-3 of the largest side so that the patch never lies on the frame's
+  // edge; a patch whose box is a point is not a surface piece.
+  Rational largest(0);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Rational side = bounds.hi[i] - bounds.lo[i];
+    if (side > largest) largest = side;
+  }
+  if (largest == Rational(0)) {
+    throw InputError("invalid_domain", "the domain's image is a single point").in_field(field + ".domain");
+  }
+  const Rational pad = largest / Rational(1000);
+  if (!source.box) {
     for (std::size_t i = 0; i < 3; ++i) {
-      const Rational side = bounds->hi[i] - bounds->lo[i];
-      if (side > largest) largest = side;
-    }
-    if (largest == Rational(0)) {
-      throw InputError("invalid_domain", "the domain's image is a single point").in_field(field + ".domain");
-    }
-    const Rational pad = largest / Rational(1000);
-    if (!source.box) {
-      for (std::size_t i = 0; i < 3; ++i) {
-        frame_box.lo[i] = bounds->lo[i] - pad;
-        frame_box.hi[i] = bounds->hi[i] + pad;
-      }
-    }
-    double* lo_d[3] = {&lo.x, &lo.y, &lo.z};
-    double* hi_d[3] = {&hi.x, &hi.y, &hi.z};
-    float* lo_f[3] = {&lo_float.x, &lo_float.y, &lo_float.z};
-    float* hi_f[3] = {&hi_float.x, &hi_float.y, &hi_float.z};
-    for (std::size_t i = 0; i < 3; ++i) {
-      *lo_d[i] = round_down<double>(bounds->lo[i]);
-      *hi_d[i] = round_up<double>(bounds->hi[i]);
-      *lo_f[i] = round_down<float>(bounds->lo[i]);
-      *hi_f[i] = round_up<float>(bounds->hi[i]);
-      if (!std::isfinite(*lo_f[i]) || !std::isfinite(*hi_f[i])) {
-        throw InputError("invalid_domain", "the patch's box exceeds float's range").in_field(field + ".domain");
-      }
+      frame_box.lo[i] = bounds.lo[i] - pad;
+      frame_box.hi[i] = bounds.hi[i] + pad;
     }
   }
+  TrimBox box;
+  double* lo_d[3] = {&box.lo.x, &box.lo.y, &box.lo.z};
+  double* hi_d[3] = {&box.hi.x, &box.hi.y, &box.hi.z};
+  float* lo_f[3] = {&box.lo_float.x, &box.lo_float.y, &box.lo_float.z};
+  float* hi_f[3] = {&box.hi_float.x, &box.hi_float.y, &box.hi_float.z};
+  for (std::size_t i = 0; i < 3; ++i) {
+    *lo_d[i] = round_down<double>(bounds.lo[i]);
+    *hi_d[i] = round_up<double>(bounds.hi[i]);
+    *lo_f[i] = round_down<float>(bounds.lo[i]);
+    *hi_f[i] = round_up<float>(bounds.hi[i]);
+    if (!std::isfinite(*lo_f[i]) || !std::isfinite(*hi_f[i])) {
+      throw InputError("invalid_domain", "the patch's box exceeds float's range").in_field(field + ".domain");
+    }
+  }
+  return box;
+}
+
+}  // namespace
+
+PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& source, const SceneBox& default_box,
+                                     SdfMode mode, const Budget& budget, const std::string& field) {
+  const LeafEquation equation = leaf_equation(kind, source, budget, field);
+  const Polynomial& f = equation.f;
+  SceneBox frame_box = source.box ? *source.box : default_box;
+  std::optional<TrimBox> trim;
+  if (equation.bounds) trim = trim_box(*equation.bounds, source, frame_box, field);
 
   PolynomialLeaf leaf(f);
   try {
@@ -151,12 +184,12 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
     throw at_field(e, field, e.code() == "invalid_box" ? "box" : (kind == NodeKind::implicit ? "equation" : ""));
   }
   leaf.frame_box_ = frame_box;
-  if (bounds) {
+  if (trim) {
     leaf.trimmed_ = true;
-    leaf.lo_ = lo;
-    leaf.hi_ = hi;
-    leaf.lo_float_ = lo_float;
-    leaf.hi_float_ = hi_float;
+    leaf.lo_ = trim->lo;
+    leaf.hi_ = trim->hi;
+    leaf.lo_float_ = trim->lo_float;
+    leaf.hi_float_ = trim->hi_float;
   }
   return leaf;
 }

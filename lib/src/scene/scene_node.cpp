@@ -12,7 +12,8 @@ using enum ParameterType;
 using enum ParameterRange;
 
 // One row per NodeKind, in enum order (node_kind_info indexes it). Parameters are
-// in slot order: the kind's operations read slot i as the i-th parameter here.
+// in slot order: the kind's operations read slot i as the i-th parameter here. Longer
+// than a screen because it is the table itself, one row per kind.
 const std::vector<NodeKindInfo>& kinds_table() {
   static const std::vector<NodeKindInfo> kinds = {
       {NodeKind::sphere,
