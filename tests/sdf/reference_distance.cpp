@@ -89,6 +89,20 @@ long double distance_squared_long(const Point3& p, const std::array<long double,
   return sum;
 }
 
+// The coefficients of `line`, a polynomial in the variable `along` alone, by
+// increasing degree, divided by the largest in absolute value.
+std::vector<long double> normalized_coefficients(const Polynomial& line, std::size_t along) {
+  std::vector<long double> c(static_cast<std::size_t>(line.degree_in(along)) + 1, 0);
+  long double largest = 0;
+  for (std::size_t t = 0; t < line.num_terms(); ++t) {
+    const long double v = to_mpq(line.coefficient(t)).get_d();
+    c[static_cast<std::size_t>(line.exponents(t)[along])] = v;
+    largest = std::max(largest, std::fabs(v));
+  }
+  for (long double& v : c) v /= largest;
+  return c;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------
@@ -456,15 +470,8 @@ std::vector<Point3> ReferenceDistance::line_roots(const Polynomial& f, const Sce
         if (line.is_constant()) continue;
         seed_singular_points(line, along, base, spacing, seeds);
         const Polynomial square_free = square_free_part(line, along);
-        std::vector<long double> c(static_cast<std::size_t>(square_free.degree_in(along)) + 1, 0);
-        long double largest = 0;
-        for (std::size_t t = 0; t < square_free.num_terms(); ++t) {
-          const long double v = to_mpq(square_free.coefficient(t)).get_d();
-          c[static_cast<std::size_t>(square_free.exponents(t)[along])] = v;
-          largest = std::max(largest, std::fabs(v));
-        }
-        for (long double& v : c) v /= largest;
-        for (long double t : real_roots_in(c, box_.lo[along], box_.hi[along])) {
+        for (long double t :
+             real_roots_in(normalized_coefficients(square_free, along), box_.lo[along], box_.hi[along])) {
           Point3 p = base;
           p[along] = static_cast<double>(t);
           cloud.push_back(p);
@@ -485,15 +492,8 @@ std::vector<Point3> ReferenceDistance::line_roots(const Polynomial& f, const Sce
 
 void ReferenceDistance::seed_singular_points(const Polynomial& line, std::size_t along, const Point3& base,
                                              double spacing, std::vector<LongPoint>& seeds) const {
-  std::vector<long double> c(static_cast<std::size_t>(line.degree_in(along)) + 1, 0);
-  long double largest = 0;
-  for (std::size_t t = 0; t < line.num_terms(); ++t) {
-    const long double v = to_mpq(line.coefficient(t)).get_d();
-    c[static_cast<std::size_t>(line.exponents(t)[along])] = v;
-    largest = std::max(largest, std::fabs(v));
-  }
-  if (c.size() < 3) return;
-  for (long double& v : c) v /= largest;
+  if (line.degree_in(along) < 2) return;
+  const std::vector<long double> c = normalized_coefficients(line, along);
   std::vector<long double> d1, d2;
   for (std::size_t k = 1; k < c.size(); ++k) d1.push_back(c[k] * static_cast<long double>(k));
   for (std::size_t k = 1; k < d1.size(); ++k) d2.push_back(d1[k] * static_cast<long double>(k));
