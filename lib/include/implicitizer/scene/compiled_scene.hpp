@@ -47,6 +47,10 @@ struct SceneParams {
   std::string name = "scene";  ///< the GLSL function is NAME_sdf; helpers are NAME_*
   /// The path of the root in error fields: errors name "scene.children[1].radius".
   std::string root_field = "scene";
+  /// 3: a scene in space, `float NAME_sdf(vec3 p)`. 2: a plane curve (its leaves are
+  /// polynomials in x and y, or parametrizations with x and y only), `float
+  /// NAME_sdf(vec2 p)`, evaluated at z = 0 (docs/sdf.md, "Curves").
+  int dimension = 3;
 };
 
 /// What a node's value guarantees (exact arithmetic).

@@ -31,6 +31,7 @@
 #include "implicitizer/sdf/fast_sdf.hpp"
 #include "implicitizer/sdf/glsl_export.hpp"
 #include "implicitizer/sdf/safe_sdf.hpp"
+#include "implicitizer/sdf/sdf_shape.hpp"
 #include "implicitizer/sdf/scene_frame.hpp"
 
 namespace implicitizer {
@@ -79,6 +80,8 @@ class PolynomialLeaf {
 
   /// Whether the leaf is a trimmed sheet.
   bool trimmed() const { return trimmed_; }
+  /// The shape the leaf's value describes (never automatic: what was picked).
+  SdfShape shape() const { return trimmed_ ? SdfShape::sheet : SdfShape::solid; }
   /// The trimming box's corners as floats (rounded outwards from the exact bound).
   const Vec3<float>& trim_lo() const { return lo_float_; }
   /// See trim_lo().

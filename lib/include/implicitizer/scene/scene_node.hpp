@@ -55,6 +55,7 @@
 #include "implicitizer/core/rational.hpp"
 #include "implicitizer/scene/vec3.hpp"
 #include "implicitizer/sdf/scene_frame.hpp"
+#include "implicitizer/sdf/sdf_shape.hpp"
 
 namespace implicitizer {
 
@@ -166,9 +167,12 @@ struct PolynomialLeafSource {
   std::array<std::string, 3> coordinates;  ///< parametric: x, y, z in the parameters
   std::optional<std::vector<std::string>> parameter_names;  ///< parametric: their order (default: as they appear)
   /// parametric: one closed interval per parameter, in parameter order; empty: the
-  /// whole surface (untrimmed). With a domain the leaf is the trimmed sheet.
+  /// default domain (docs/sdf.md, "Patches"). The leaf is the patch X(domain).
   std::vector<std::pair<Rational, Rational>> domain;
-  std::optional<SceneBox> box;  ///< the frame box (default: SceneParams::box)
+  std::optional<SceneBox> box;  ///< the frame box (default: fitted to the patch, else SceneParams::box)
+  /// What the leaf's value describes (sdf_shape.hpp); automatic decides at compile
+  /// time and PolynomialLeaf::shape() says what it picked.
+  SdfShape shape = SdfShape::automatic;
 };
 
 /// One node of a scene tree.
