@@ -15,30 +15,6 @@
 namespace implicitizer {
 namespace {
 
-// The largest F ≤ q and the smallest F ≥ q (F = float or double): mpq_get_d truncates
-// toward zero, so step once or twice to the right side. Beyond F's range the answer is
-// ±infinity (the caller refuses it); mpq_class(±inf) would raise SIGFPE in GMP, which
-// the request fuzzer found with a patch whose box exceeds float's range.
-template <typename F>
-F round_down(const Rational& q) {
-  const mpq_class exact = to_mpq(q);
-  F x = static_cast<F>(exact.get_d());
-  while (std::isfinite(x) && mpq_class(static_cast<double>(x)) > exact) {
-    x = std::nextafter(x, -std::numeric_limits<F>::infinity());
-  }
-  return x;
-}
-
-template <typename F>
-F round_up(const Rational& q) {
-  const mpq_class exact = to_mpq(q);
-  F x = static_cast<F>(exact.get_d());
-  while (std::isfinite(x) && mpq_class(static_cast<double>(x)) < exact) {
-    x = std::nextafter(x, std::numeric_limits<F>::infinity());
-  }
-  return x;
-}
-
 // Rethrows an InputError of a sub-field ("x", "domain", or "" for the whole text) as
 // one of the leaf at `field`.
 InputError at_field(const InputError& e, const std::string& field, const std::string& sub) {
