@@ -6,6 +6,7 @@
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 #include "implicitizer/implicitization/parametrization.hpp"
+#include "implicitizer/implicitization/patch_domain.hpp"
 #include "implicitizer/polynomial/parser.hpp"
 #include "implicitizer/polynomial/ring.hpp"
 #include "implicitizer/scene/primitives.hpp"
@@ -24,25 +25,57 @@ InputError at_field(const InputError& e, const std::string& field, const std::st
 
 }  // namespace
 
-std::string trim_glsl(const std::string& prefix) {
-  return "float " + prefix +
-         "_trim(vec3 p, vec3 lo, vec3 hi, float d) {\n"
-         "  vec3 q = max(lo - p, p - hi);\n"
-         "  vec3 m = max(q, 0.0);\n"
-         "  return max(abs(d), " +
-         glsl_length("m") +
-         ");\n"
-         "}\n";
-}
-
 namespace {
 
 // A leaf's implicit equation: parsed (kind implicit) or implicitized (kind
-// parametric), with the bounds of the patch when the source gives a domain.
+// parametric), with the patch it stands for (parametric only).
 struct LeafEquation {
   Polynomial f{space_ring()};
-  std::optional<PatchBounds> bounds;
+  struct Patch {
+    Parametrization parametrization;
+    std::optional<ParameterDomain> domain;  ///< none: the whole parameter plane
+    PatchBounds bounds;                     ///< a box containing X(domain)
+  };
+  std::optional<Patch> patch;
 };
+
+// The requested domain, checked: one interval per parameter, each with lo < hi (a
+// degenerate interval makes a curve or a point, not a patch).
+ParameterDomain checked_domain(const PolynomialLeafSource& source, const Parametrization& parametrization) {
+  const RingPtr& ring = parametrization.parameter_ring;
+  if (source.domain.size() != ring->num_variables()) {
+    throw InputError("invalid_domain", "the domain has " + std::to_string(source.domain.size()) +
+                                           " intervals, the parametrization " + std::to_string(ring->num_variables()) +
+                                           " parameters")
+        .in_field("domain");
+  }
+  for (std::size_t j = 0; j < source.domain.size(); ++j) {
+    const auto& [lo, hi] = source.domain[j];
+    if (!(lo < hi)) {
+      throw InputError("invalid_domain", "the interval of " + ring->variables()[j] + " is [" + to_string(lo) + ", " +
+                                             to_string(hi) + "]: its lower end must be below its upper end")
+          .in_field("domain");
+    }
+  }
+  return ParameterDomain{source.domain};
+}
+
+// The patch of `source`: its domain (the default one when the source names none,
+// patch_domain.hpp) and the exact bound of its image.
+LeafEquation::Patch leaf_patch(const PolynomialLeafSource& source, Parametrization parametrization,
+                               const Budget& budget) {
+  LeafEquation::Patch patch;
+  if (source.domain.empty()) {
+    DefaultPatchDomain d = default_patch_domain(parametrization, budget);
+    if (!d.whole_plane) patch.domain = std::move(d.domain);
+    patch.bounds = std::move(d.bounds);
+  } else {
+    patch.domain = checked_domain(source, parametrization);
+    patch.bounds = bound_patch(parametrization, *patch.domain, budget);
+  }
+  patch.parametrization = std::move(parametrization);
+  return patch;
+}
 
 LeafEquation implicitize_leaf(const PolynomialLeafSource& source, const Budget& budget, const std::string& field) {
   LeafEquation out;
@@ -53,14 +86,10 @@ LeafEquation implicitize_leaf(const PolynomialLeafSource& source, const Budget& 
   } catch (const InputError& e) {
     throw at_field(e, field, "x");
   }
-  if (!source.domain.empty()) {
-    ParameterDomain domain;
-    domain.intervals = source.domain;
-    try {
-      out.bounds = bound_patch(parametrization, domain, budget);
-    } catch (const InputError& e) {
-      throw at_field(e, field, "domain");
-    }
+  try {
+    out.patch = leaf_patch(source, parametrization, budget);
+  } catch (const InputError& e) {
+    throw at_field(e, field, "domain");
   }
   ImplicitizeParams params;
   params.budget = budget;
@@ -94,18 +123,10 @@ LeafEquation leaf_equation(NodeKind kind, const PolynomialLeafSource& source, co
   return out;
 }
 
-// A patch's box rounded outwards, in double and in float.
-struct TrimBox {
-  Vec3<double> lo, hi;
-  Vec3<float> lo_float, hi_float;
-};
-
-// The box that trims a patch; also pads `frame_box` around it when the source gives
-// no box of its own.
-TrimBox trim_box(const PatchBounds& bounds, const PolynomialLeafSource& source, SceneBox& frame_box,
-                 const std::string& field) {
-  // Pad by 1e-3 of the largest side so that the patch never lies on the frame's
-  // edge; a patch whose box is a point is not a surface piece.
+// The frame box fitted to a patch: its bound padded by 1e-3 of its largest side, so
+// that the patch never lies on the frame's edge. A patch whose bound is a point is
+// not a surface piece, and one beyond float's range cannot be stated in the GLSL.
+SceneBox fitted_box(const PatchBounds& bounds, const std::string& field) {
   Rational largest(0);
   for (std::size_t i = 0; i < 3; ++i) {
     const Rational side = bounds.hi[i] - bounds.lo[i];
@@ -115,23 +136,11 @@ TrimBox trim_box(const PatchBounds& bounds, const PolynomialLeafSource& source, 
     throw InputError("invalid_domain", "the domain's image is a single point").in_field(field + ".domain");
   }
   const Rational pad = largest / Rational(1000);
-  if (!source.box) {
-    for (std::size_t i = 0; i < 3; ++i) {
-      frame_box.lo[i] = bounds.lo[i] - pad;
-      frame_box.hi[i] = bounds.hi[i] + pad;
-    }
-  }
-  TrimBox box;
-  double* lo_d[3] = {&box.lo.x, &box.lo.y, &box.lo.z};
-  double* hi_d[3] = {&box.hi.x, &box.hi.y, &box.hi.z};
-  float* lo_f[3] = {&box.lo_float.x, &box.lo_float.y, &box.lo_float.z};
-  float* hi_f[3] = {&box.hi_float.x, &box.hi_float.y, &box.hi_float.z};
+  SceneBox box;
   for (std::size_t i = 0; i < 3; ++i) {
-    *lo_d[i] = round_down<double>(bounds.lo[i]);
-    *hi_d[i] = round_up<double>(bounds.hi[i]);
-    *lo_f[i] = round_down<float>(bounds.lo[i]);
-    *hi_f[i] = round_up<float>(bounds.hi[i]);
-    if (!std::isfinite(*lo_f[i]) || !std::isfinite(*hi_f[i])) {
+    box.lo[i] = bounds.lo[i] - pad;
+    box.hi[i] = bounds.hi[i] + pad;
+    if (!std::isfinite(round_down<float>(box.lo[i])) || !std::isfinite(round_up<float>(box.hi[i]))) {
       throw InputError("invalid_domain", "the patch's box exceeds float's range").in_field(field + ".domain");
     }
   }
@@ -145,8 +154,7 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
   const LeafEquation equation = leaf_equation(kind, source, budget, field);
   const Polynomial& f = equation.f;
   SceneBox frame_box = source.box ? *source.box : default_box;
-  std::optional<TrimBox> trim;
-  if (equation.bounds) trim = trim_box(*equation.bounds, source, frame_box, field);
+  if (equation.patch && !source.box) frame_box = fitted_box(equation.patch->bounds, field);
 
   PolynomialLeaf leaf(f);
   try {
@@ -160,12 +168,11 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
     throw at_field(e, field, e.code() == "invalid_box" ? "box" : (kind == NodeKind::implicit ? "equation" : ""));
   }
   leaf.frame_box_ = frame_box;
-  if (trim) {
-    leaf.trimmed_ = true;
-    leaf.lo_ = trim->lo;
-    leaf.hi_ = trim->hi;
-    leaf.lo_float_ = trim->lo_float;
-    leaf.hi_float_ = trim->hi_float;
+  // A patch over a bounded domain is trimmed to its cover; over the whole plane the
+  // patch is all of its algebraic surface that the fitted box holds (docs/sdf.md,
+  // "Patches"), and the frame box clips it.
+  if (equation.patch && equation.patch->domain) {
+    leaf.cover_ = PatchCover::build(equation.patch->parametrization, *equation.patch->domain, f, frame_box, budget);
   }
   return leaf;
 }
@@ -182,9 +189,9 @@ void classify_leaf(NodeCompilation& c) { c.out.node_class = c.safe() ? NodeClass
 NodeBox bound_leaf(const NodeCompilation& c) {
   const PolynomialLeaf& leaf = c.leaves[static_cast<std::size_t>(c.out.leaf)];
   if (leaf.trimmed()) {
-    // t ≥ 0 everywhere: the solid {t ≤ 0} is the sheet, inside the trimming box.
-    const Vec3<float>& l = leaf.trim_lo();
-    const Vec3<float>& h = leaf.trim_hi();
+    // t ≥ 0 everywhere: the solid {t ≤ 0} is the sheet, inside the cover's boxes.
+    const Vec3<float> l = leaf.trim_lo();
+    const Vec3<float> h = leaf.trim_hi();
     return {{l.x, l.y, l.z}, {h.x, h.y, h.z}, false};
   }
   // Beyond kFarField (u = (p − c)·s, max norm) both modes return the positive box
@@ -208,9 +215,9 @@ std::string emit_leaf(SceneGlslWriter& w, const CompiledNode& n, const std::stri
   w.require_helper(id, leaf.to_glsl(w.prefix() + "_" + id));
   const std::string d = w.value(w.call(id, p), SceneGlslWriter::type(n));
   if (!leaf.trimmed()) return d;
-  w.require_helper("trim", trim_glsl(w.prefix()));
-  return w.value(w.call("trim", p + ", " + glsl_vec3(leaf.trim_lo()) + ", " + glsl_vec3(leaf.trim_hi()) + ", " + d),
-                 "trimmed to the patch's box");
+  const std::string cover = id + "_cover";
+  w.require_helper(cover, leaf.cover()->to_glsl(w.prefix() + "_" + cover), PatchCover::glsl_suffixes());
+  return w.value(w.call(cover, p + ", " + d), "trimmed to the patch's cover");
 }
 
 }  // namespace

@@ -120,6 +120,8 @@ class PatchCover {
   /// computing distance_lower_bound<float>. Precondition: FUNCTION is a valid GLSL
   /// identifier.
   std::string to_glsl(const std::string& function) const;
+  /// The other global names to_glsl(FUNCTION) defines: FUNCTION + each suffix.
+  static std::vector<std::string> glsl_suffixes() { return {"_lo", "_hi", "_clo", "_chi", "_d2"}; }
 
   /// What build() did.
   const PatchCoverStats& stats() const { return stats_; }
