@@ -17,6 +17,7 @@
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 #include "implicitizer/implicitization/patch_domain.hpp"
+#include "implicitizer/polynomial/parser.hpp"
 #include "scene/scene_support.hpp"
 
 namespace implicitizer {
@@ -212,6 +213,24 @@ TEST(PatchCover, SearchCapIsALimit) {
   EXPECT_THROW(cover_patch("s-s^3/3+s*t^2", "t-t^3/3+t*s^2", "s^2-t^2", domain_of(0, 1, 0, 1), params), LimitExceeded);
 }
 
+TEST(PatchCover, CancelledBudgetStopsTheBuild) {
+  const Parametrization p = parse_parametrization("s-s^3/3+s*t^2", "t-t^3/3+t*s^2", "s^2-t^2");
+  const Polynomial f = implicitize(p).implicit;
+  SceneBox frame;
+  for (std::size_t i = 0; i < 3; ++i) {
+    frame.lo[i] = Rational(-2);
+    frame.hi[i] = Rational(2);
+  }
+  Budget budget;
+  budget.cancel();
+  try {
+    PatchCover::build(p, domain_of(0, 1, 0, 1), f, frame, budget);
+    ADD_FAILURE() << "no LimitExceeded";
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit(), Limit::cancelled);
+  }
+}
+
 TEST(PatchCover, GlslMatchesFloatOnLlvmpipe) {
   const Covered c = cover_patch("s^2+2*s*t-t+1", "s*t^2-s+3*t", "s^2*t^2+s-2*t^2", domain_of(0, 1, 0, 1));
   for (const char* header : {"#version 300 es\nprecision highp float;", "#version 330"}) {
@@ -244,6 +263,44 @@ TEST(PatchCover, GlslMatchesFloatOnLlvmpipe) {
     identical += cpu == gpu[i];
   }
   std::printf("%zu of %zu points bit-identical\n", identical, points.size());
+}
+
+TEST(PatchCover, PlaneCurveIsCoveredByABinaryTree) {
+  // The nodal cubic y² = x²(x + 1), x = t² − 1, y = t³ − t, over t ∈ [0, 3/2]: the
+  // lower half of the loop and the upper branch. The upper half of the loop
+  // (t ∈ (−1, 0)) lies inside the box of X(D) and must stay away; the curve is a
+  // cylinder in space, cut at z = 0, and every box lies in that plane.
+  const Parametrization curve = parse_parametrization({"t^2-1", "t^3-t"});
+  const Polynomial f = parse_polynomial("y^2-x^3-x^2", space_ring());
+  SceneBox frame;
+  for (std::size_t i = 0; i < 3; ++i) {
+    frame.lo[i] = Rational(-3, 2);
+    frame.hi[i] = Rational(22, 10);
+  }
+  const double h = 1.85;
+  const PatchCover cover =
+      PatchCover::build(curve, ParameterDomain{{{Rational(0), Rational(3, 2)}}}, f, frame, Budget());
+  EXPECT_EQ(cover.stats().unresolved, 0U);
+  EXPECT_GT(cover.stats().leaves, 1U);
+  const auto at = [](double t) { return V{t * t - 1, t * t * t - t, 0}; };
+  std::vector<V> sample;
+  for (int i = 0; i <= 3000; ++i) sample.push_back(at(1.5 * i / 3000));
+  std::size_t far = 0;
+  for (int i = 0; i <= 200; ++i) {
+    EXPECT_EQ(cover.distance_lower_bound(at(1.5 * i / 200), 0.0), 0.0);
+    const V p = at(-1 + 0.01 * i);  // t ∈ [−1, 1]: the whole loop
+    double distance = INFINITY;
+    for (const V& q : sample) distance = std::min(distance, length(p - q));
+    if (distance <= 0.1 * h + 1e-3) continue;
+    ++far;
+    EXPECT_GT(cover.distance_lower_bound(to_float(p), 0.0f), 0.01 * h) << "t = " << -1 + 0.01 * i;
+  }
+  EXPECT_GT(far, 50U);
+  for (std::size_t j = 0; j < cover.leaf_lo().size(); ++j) {
+    EXPECT_EQ(cover.leaf_lo()[j].z, 0.0f);
+    EXPECT_EQ(cover.leaf_hi()[j].z, 0.0f);
+  }
+  std::printf("nodal cubic: %zu leaves, %zu far points checked\n", cover.stats().leaves, far);
 }
 
 // Leaf counts and build times of every parametric bench surface on [0, 1]² (the
