@@ -213,6 +213,26 @@ TEST(PatchCover, SearchCapIsALimit) {
   EXPECT_THROW(cover_patch("s-s^3/3+s*t^2", "t-t^3/3+t*s^2", "s^2-t^2", domain_of(0, 1, 0, 1), params), LimitExceeded);
 }
 
+TEST(PatchCover, PatchBeyondFloatsRangeInASmallBox) {
+  // z reaches 1e54 on [0, 1]²: the boxes' corners beyond float's range are clamped
+  // to ±FLT_MAX, and the GLSL states only finite numbers.
+  const Parametrization p =
+      parse_parametrization("s", "t", "1000000000000000000000000000000000000000000000000000000*s*t");
+  const Polynomial f = implicitize(p).implicit;
+  SceneBox frame;
+  for (std::size_t i = 0; i < 3; ++i) {
+    frame.lo[i] = Rational(-2);
+    frame.hi[i] = Rational(2);
+  }
+  const PatchCover cover = PatchCover::build(p, domain_of(0, 1, 0, 1), f, frame, Budget());
+  for (const Vec3<float>& hi : cover.leaf_hi()) EXPECT_TRUE(std::isfinite(hi.z));
+  // X(1/2, 2e-24) = (1/2, 2e-24, 1e30) lies in a box.
+  EXPECT_EQ(cover.distance_lower_bound(Vec3<float>{0.5f, 2e-24f, 1e30f}, 0.0f), 0.0f);
+  EXPECT_EQ(testing::glslang_errors("#version 300 es\nprecision highp float;",
+                                    cover.to_glsl("cover") + "float run(vec3 p) { return cover(p, 0.0); }\n", "run"),
+            "");
+}
+
 TEST(PatchCover, CancelledBudgetStopsTheBuild) {
   const Parametrization p = parse_parametrization("s-s^3/3+s*t^2", "t-t^3/3+t*s^2", "s^2-t^2");
   const Polynomial f = implicitize(p).implicit;

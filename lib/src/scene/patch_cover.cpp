@@ -302,9 +302,13 @@ Node make_node(const Parametrization& parametrization, ParameterDomain domain, c
   Node node{std::move(domain), {0, 0, 0}, {0, 0, 0}, {}, 0};
   float* lo[3] = {&node.lo.x, &node.lo.y, &node.lo.z};
   float* hi[3] = {&node.hi.x, &node.hi.y, &node.hi.z};
+  // Beyond float's range a corner is clamped to ±FLT_MAX: for every float point p
+  // the distance to the clamped box is at most the distance to the true one (equal
+  // when the box reaches beyond on one side only), and the GLSL can state it.
+  constexpr float kLargest = std::numeric_limits<float>::max();
   for (std::size_t i = 0; i < bounds.lo.size(); ++i) {
-    *lo[i] = round_down<float>(bounds.lo[i]);
-    *hi[i] = round_up<float>(bounds.hi[i]);
+    *lo[i] = std::clamp(round_down<float>(bounds.lo[i]), -kLargest, kLargest);
+    *hi[i] = std::clamp(round_up<float>(bounds.hi[i]), -kLargest, kLargest);
     node.largest_side = std::max(node.largest_side, *hi[i] - *lo[i]);
   }
   return node;

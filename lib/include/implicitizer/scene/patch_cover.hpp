@@ -38,7 +38,8 @@
 /// cluster_size consecutive leaves (the last one padded by repeating its last leaf),
 /// each with the box around its leaves. distance_lower_bound() walks the clusters,
 /// opens only those closer than the best leaf so far and returns as soon as a leaf is
-/// within |d|. Boxes are stored rounded outwards (float and double), squared
+/// within |d|. Boxes are stored rounded outwards (float and double; corners beyond
+/// float's range clamped to ±FLT_MAX, which only shortens distances), squared
 /// distances are computed with each component clamped to 1e18 (no overflow; a
 /// smaller distance), and the final square root is multiplied by 1 − 2^−17 (float;
 /// 1 − 2^−46 for double), more than the relative rounding of the few operations
