@@ -436,7 +436,10 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
     for (auto c = nodes[i].children.rbegin(); c != nodes[i].children.rend(); ++c) stack.push_back(*c);
   }
   stats.leaves = order.size();
-  cover.cluster_size_ = std::max<std::size_t>(1, params.cluster_size);
+  cover.cluster_size_ = params.cluster_size;
+  if (cover.cluster_size_ == 0) {
+    cover.cluster_size_ = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(order.size()))));
+  }
   const std::size_t k = cover.cluster_size_;
   while (order.size() % k != 0) order.push_back(order.back());
   stats.clusters = order.size() / k;

@@ -35,7 +35,7 @@
 /// small nor proven, and stats().tolerance_reached how large the largest is.
 ///
 /// Evaluation. The leaves, in quadtree order, are grouped in clusters of
-/// cluster_size consecutive leaves (the last one padded by repeating its last leaf),
+/// cluster_size (default ⌈√leaves⌉) consecutive leaves (the last one padded by repeating its last leaf),
 /// each with the box around its leaves. distance_lower_bound() walks the clusters,
 /// opens only those closer than the best leaf so far and returns as soon as a leaf is
 /// within |d|. Boxes are stored rounded outwards (float and double; corners beyond
@@ -63,12 +63,14 @@ namespace implicitizer {
 /// How finely build() covers a patch (lengths as fractions of h, the frame box's
 /// largest half side).
 struct PatchCoverParams {
-  double tolerance = 1.0 / 20;               ///< leaves whose largest side is at most tolerance·h are never split
-  double reach = 0.09;                       ///< points of Z within reach·h of X(D) may lie near a leaf box
-  double margin = 0.0105;                    ///< how close to a leaf box a far point must not come (0.01·h and slack)
-  double resolution = 0.01;                  ///< the half diagonal at which the far-cell search stops subdividing
-  std::size_t max_leaves = 1024;             ///< the refinement stops splitting here
-  std::size_t cluster_size = 16;             ///< leaves per cluster
+  double tolerance = 1.0 / 20;    ///< leaves whose largest side is at most tolerance·h are never split
+  double reach = 0.09;            ///< points of Z within reach·h of X(D) may lie near a leaf box
+  double margin = 0.0105;         ///< how close to a leaf box a far point must not come (0.01·h and slack)
+  double resolution = 0.01;       ///< the half diagonal at which the far-cell search stops subdividing
+  std::size_t max_leaves = 1024;  ///< the refinement stops splitting here
+  /// Leaves per cluster; 0: ⌈√leaves⌉, which balances the clusters every evaluation
+  /// visits against the leaves of a cluster it opens.
+  std::size_t cluster_size = 0;
   std::size_t tightening_depth = 1;          ///< bound_patch()'s tightening per node box
   std::size_t max_search_cells = 4'000'000;  ///< cells the far-cell search may visit (LimitExceeded beyond)
 };
@@ -143,7 +145,7 @@ class PatchCover {
  private:
   template <typename T>
   struct Boxes {
-    std::vector<Vec3<T>> lo, hi;                  // cluster_size per cluster
+    std::vector<Vec3<T>> lo, hi;                  // cluster_size_ per cluster
     std::vector<Vec3<T>> cluster_lo, cluster_hi;  // one per cluster
     T shrink = 1;
   };
