@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <stdexcept>
 
 #include "sdf/sdf_support.hpp"
 
@@ -194,6 +195,44 @@ TEST(FastSdf, SingularPointGivesAFiniteValue) {
   const FastSdf sdf = FastSdf::build(parse_xyz("x^2+y^2-z^2"), SceneBox::default_box());
   EXPECT_EQ(sdf.evaluate<float>(0, 0, 0), 0.0f);
   EXPECT_TRUE(std::isfinite(sdf.evaluate<float>(1e-30f, 0, 0)));
+}
+
+// A sheet is max(|estimate|, signed box distance): the plane x + 2y − 2z = 1 (whose
+// estimate is its exact distance (x + 2y − 2z − 1)/3) gives |that| inside the box and
+// the box distance outside; >= 0 everywhere, 0 on the plane, no cap. The solid of the
+// same plane is negative on one side.
+TEST(FastSdf, SheetIsTheAbsoluteEstimateClippedToTheBox) {
+  const Polynomial f = parse_xyz("x+2*y-2*z-1");
+  const FastSdf sheet = FastSdf::build(f, SceneBox::default_box(), Budget(), SdfShape::sheet);
+  const FastSdf solid = FastSdf::build(f, SceneBox::default_box());
+  EXPECT_EQ(sheet.shape(), SdfShape::sheet);
+  EXPECT_EQ(solid.shape(), SdfShape::solid);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> coordinate(-6, 6);
+  int negative_solid = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const double x = coordinate(random), y = coordinate(random), z = coordinate(random);
+    const double plane = (x + 2 * y - 2 * z - 1) / 3;
+    const double box = testing::signed_box_distance(sheet.frame(), x, y, z);
+    const double value = sheet.evaluate<double>(x, y, z);
+    EXPECT_GE(value, 0.0) << x << ", " << y << ", " << z;
+    EXPECT_GE(sheet.evaluate<float>(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)), 0.0f);
+    // Beyond the far field (|u_i| > 2) the value is the box distance alone.
+    const double expected = std::max(std::fabs(x), std::max(std::fabs(y), std::fabs(z))) > 4
+                                ? box
+                                : std::max(std::fabs(plane), box);
+    EXPECT_NEAR(value, expected, 1e-12) << x << ", " << y << ", " << z;
+    if (solid.evaluate<double>(x, y, z) < 0) ++negative_solid;
+  }
+  EXPECT_GT(negative_solid, 10);
+  // On the plane inside the box: 0 (exact points of it).
+  EXPECT_EQ(sheet.evaluate<float>(1, 0, 0), 0.0f);
+  EXPECT_EQ(sheet.evaluate<double>(1, 1, 1), 0.0);
+  // Its GLSL takes the absolute value; the solid's does not.
+  EXPECT_NE(sheet.to_glsl("plane_sdf").find("return max(abs(d), box);"), std::string::npos);
+  EXPECT_EQ(solid.to_glsl("plane_sdf").find("abs(d)"), std::string::npos);
+  // automatic is decided before building (enclosure.hpp), not here.
+  EXPECT_THROW((void)FastSdf::build(f, SceneBox::default_box(), Budget(), SdfShape::automatic), std::invalid_argument);
 }
 
 }  // namespace

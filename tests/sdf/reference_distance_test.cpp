@@ -229,5 +229,37 @@ TEST(SafeSdfAccuracy, NeverExceedsTheReferenceOnThePublicSurfaces) {
   }
 }
 
+// Sheets (shape sheet): at the same points, the safe sheet is >= 0, at least the
+// magnitude of the safe solid (it takes the radius where the solid takes the smaller
+// of the radius and the distance to the faces), and never above the reference
+// distance; the fast sheet is >= 0 and the magnitude of the fast solid wherever F >= 0
+// or the point is outside the box.
+TEST(SafeSdfAccuracy, SheetsAreNonNegativeLowerBoundsOnThePublicSurfaces) {
+  for (const PublicSurface& s : public_surfaces()) {
+    const SceneBox box = testing::public_surface_box(s.name);
+    const ReferenceDistance reference = ReferenceDistance::build(s.implicit, &s.parametrization, box);
+    const SafeSdf solid = SafeSdf::build(s.implicit, box);
+    const SafeSdf sheet = SafeSdf::build(s.implicit, box, Budget(), SdfShape::sheet);
+    const FastSdf fast = FastSdf::build(s.implicit, box, Budget(), SdfShape::sheet);
+    const double h = reference.box().half_extent();
+    std::size_t positive = 0, points = 0;
+    for (const Point3& p : testing::accuracy_samples(reference, 200, 29)) {
+      const float x = static_cast<float>(p[0]), y = static_cast<float>(p[1]), z = static_cast<float>(p[2]);
+      const float value = sheet.evaluate<float>(x, y, z);
+      const std::string where = s.name + " at (" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " +
+                                std::to_string(p[2]) + ")";
+      EXPECT_GE(value, 0.0f) << where;
+      EXPECT_GE(value, std::fabs(solid.evaluate<float>(x, y, z))) << where;
+      EXPECT_LE(value, reference.distance(p) * (1 + testing::EstimateStatistics::kOverRelative) +
+                           testing::EstimateStatistics::kOverAbsolute * h)
+          << where;
+      EXPECT_GE(fast.evaluate<float>(x, y, z), 0.0f) << where;
+      if (value > 0) ++positive;
+      ++points;
+    }
+    EXPECT_GT(positive, points / 2) << s.name;
+  }
+}
+
 }  // namespace
 }  // namespace implicitizer
