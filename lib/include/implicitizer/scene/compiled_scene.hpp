@@ -49,7 +49,9 @@ struct SceneParams {
   std::string root_field = "scene";
   /// 3: a scene in space, `float NAME_sdf(vec3 p)`. 2: a plane curve (its leaves are
   /// polynomials in x and y, or parametrizations with x and y only), `float
-  /// NAME_sdf(vec2 p)`, evaluated at z = 0 (docs/sdf.md, "Curves").
+  /// NAME_sdf(vec2 p)`, evaluated at z = 0 (docs/sdf.md, "Curves"): the scene is the
+  /// slice z = 0 of the 3-D scene its nodes describe. Anything else is InputError
+  /// `invalid_value` (field "dimension").
   int dimension = 3;
 };
 
@@ -85,8 +87,9 @@ class CompiledScene {
   T evaluate(const Vec3<T>& p, const UniformValues& values) const;
 
   /// The GLSL: uniform declarations, helpers of the kinds present, the polynomial
-  /// leaves NAME_leaf<k>, then `float NAME_sdf(vec3 p)`. Compiles as GLSL ES 3.00
-  /// (with `precision highp float`) and GLSL 330.
+  /// leaves NAME_leaf<k>, then `float NAME_sdf(vec3 p)` (dimension 2: `float
+  /// NAME_space(vec3 p)` and `float NAME_sdf(vec2 p)` calling it at vec3(p, 0.0)).
+  /// Compiles as GLSL ES 3.00 (with `precision highp float`) and GLSL 330.
   std::string to_glsl() const { return glsl_; }
 
   /// The uniforms, in order of first appearance (depth first, children in order).
@@ -98,6 +101,9 @@ class CompiledScene {
 
   /// NAME_sdf.
   std::string function_name() const { return name_ + "_sdf"; }
+  /// 3 (NAME_sdf takes a vec3) or 2 (a plane curve: NAME_sdf takes a vec2 and calls
+  /// the 3-D function NAME_space at z = 0; evaluate() then wants points with z = 0).
+  int dimension() const { return dimension_; }
   /// The mode compiled for.
   SdfMode mode() const { return mode_; }
   /// What the root's value guarantees.
@@ -142,6 +148,7 @@ class CompiledScene {
 
   std::string name_;
   SdfMode mode_ = SdfMode::fast;
+  int dimension_ = 3;
   std::vector<Node> nodes_;
   std::uint32_t root_ = 0;
   std::vector<PolynomialLeaf> leaves_;
