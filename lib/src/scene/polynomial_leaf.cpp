@@ -226,13 +226,11 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
   std::optional<TrimBox> trim;
   if (equation.bounds) trim = trim_box(*equation.bounds, source, frame_box, field);
   if (dimension == 2) frame_box = curve_frame_box(frame_box);
-  const Enclosure shape = resolve_shape(source, equation.f, frame_box, equation.bounds.has_value(), dimension, budget);
-  // A solid asked of a patch is the solid F <= 0 in its box: nothing to trim.
-  if (shape.shape == SdfShape::solid) trim.reset();
-  const Polynomial f = shape.negate ? -equation.f : equation.f;
-
   PolynomialLeaf leaf(equation.f);
+  Enclosure shape;
   try {
+    shape = resolve_shape(source, equation.f, frame_box, equation.bounds.has_value(), dimension, budget);
+    const Polynomial f = shape.negate ? -equation.f : equation.f;
     if (mode == SdfMode::safe) {
       leaf.safe_ = SafeSdf::build(f, frame_box, budget, shape.shape);
     } else {
@@ -242,6 +240,8 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
     // invalid_box concerns the box; degree_too_high the equation.
     throw at_field(e, field, e.code() == "invalid_box" ? "box" : (kind == NodeKind::implicit ? "equation" : ""));
   }
+  // A solid asked of a patch is the solid F <= 0 in its box: nothing to trim.
+  if (shape.shape == SdfShape::solid) trim.reset();
   leaf.frame_box_ = frame_box;
   leaf.shape_ = shape.shape;
   leaf.shape_reason_ = shape.reason;
@@ -282,7 +282,11 @@ NodeBox bound_leaf(const NodeCompilation& c) {
   const double half = reach / to_mpq(frame.scale).get_d() * (1 + 1e-6);
   const Vec3<double> centre{to_mpq(frame.centre[0]).get_d(), to_mpq(frame.centre[1]).get_d(),
                             to_mpq(frame.centre[2]).get_d()};
-  return {centre - cube_corner(half), centre + cube_corner(half), false};
+  // A fast sheet is max(|d|, b) with b the exact distance to the cube outside it: it
+  // grows. (Safe mode rounds b down by a relative 2^-19 or so, which the absolute
+  // widening above cannot cover far away.)
+  const bool grows = leaf.shape() == SdfShape::sheet && !c.safe();
+  return {centre - cube_corner(half), centre + cube_corner(half), grows};
 }
 
 template <typename T>

@@ -55,11 +55,13 @@ struct SceneParams {
   int dimension = 3;
 };
 
-/// What a node's value guarantees (exact arithmetic).
+/// What a node's value guarantees (exact arithmetic), strongest first: a node is
+/// at most as strong as its weakest child.
 enum class NodeClass : std::uint8_t {
-  lipschitz,  ///< 1-Lipschitz with the right sign: a bound, and smooth operators keep it
-  bound,      ///< |v| ≤ distance to the other side (see the file comment), not 1-Lipschitz
-  estimate,   ///< neither (fast mode: F/|∇F|, the ellipsoid's approximation, and what uses them)
+  lipschitz,    ///< 1-Lipschitz with the right sign: a bound, and smooth operators keep it
+  bound,        ///< |v| ≤ distance to the other side (see the file comment), not 1-Lipschitz
+  outer_bound,  ///< only v > 0 ⇒ v ≤ distance to the solid (a shell of a bound: shell.hpp)
+  estimate,     ///< neither (fast mode: F/|∇F|, the ellipsoid's approximation, and what uses them)
 };
 
 /// A parameter exposed to the front-end as a GLSL uniform.

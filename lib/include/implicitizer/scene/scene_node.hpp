@@ -84,6 +84,7 @@ enum class NodeKind : std::uint8_t {
   translate,
   rotate,
   scale,
+  shell,
   // Domain operators (domain_operators.hpp), one child.
   twist,
   bend,
