@@ -17,9 +17,7 @@ using testing::exact;
 using testing::parse_xyz;
 using Box = std::vector<std::pair<Rational, Rational>>;
 
-Box cube(const std::string& half, std::size_t dimension = 3) {
-  return Box(dimension, {-exact(half), exact(half)});
-}
+Box cube(const std::string& half, std::size_t dimension = 3) { return Box(dimension, {-exact(half), exact(half)}); }
 
 Enclosure decide(const std::string& f, const Box& box) { return decide_enclosure(parse_xyz(f), box); }
 

@@ -6,12 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <map>
 #include <random>
 #include <string>
 
+#include "implicitizer/sdf/enclosure.hpp"
 #include "implicitizer/sdf/fast_sdf.hpp"
 #include "implicitizer/sdf/safe_sdf.hpp"
 #include "sdf/sdf_support.hpp"
@@ -246,8 +248,8 @@ TEST(SafeSdfAccuracy, SheetsAreNonNegativeLowerBoundsOnThePublicSurfaces) {
     for (const Point3& p : testing::accuracy_samples(reference, 200, 29)) {
       const float x = static_cast<float>(p[0]), y = static_cast<float>(p[1]), z = static_cast<float>(p[2]);
       const float value = sheet.evaluate<float>(x, y, z);
-      const std::string where = s.name + " at (" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " +
-                                std::to_string(p[2]) + ")";
+      const std::string where =
+          s.name + " at (" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " + std::to_string(p[2]) + ")";
       EXPECT_GE(value, 0.0f) << where;
       EXPECT_GE(value, std::fabs(solid.evaluate<float>(x, y, z))) << where;
       EXPECT_LE(value, reference.distance(p) * (1 + testing::EstimateStatistics::kOverRelative) +
@@ -258,6 +260,28 @@ TEST(SafeSdfAccuracy, SheetsAreNonNegativeLowerBoundsOnThePublicSurfaces) {
       ++points;
     }
     EXPECT_GT(positive, points / 2) << s.name;
+  }
+}
+
+// Shape auto on the twelve public surfaces in their boxes (public_surface_box): only
+// the closed ones inside their boxes (the sphere, the torus) are solids; every open
+// surface, and Steiner's surface (its axes reach the faces of [−1, 1]³), is a sheet.
+// Prints how long each decision takes (docs/sdf.md, "Shapes").
+TEST(SdfShapes, AutoOnThePublicSurfaces) {
+  for (const PublicSurface& s : public_surfaces()) {
+    const SceneBox box = testing::public_surface_box(s.name);
+    const SceneFrame frame = make_scene_frame(box);
+    std::vector<std::pair<Rational, Rational>> cube;
+    for (std::size_t i = 0; i < 3; ++i) {
+      cube.emplace_back(frame.centre[i] - Rational(1) / frame.scale, frame.centre[i] + Rational(1) / frame.scale);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const Enclosure e = decide_enclosure(s.implicit, cube);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const bool closed = s.name == "unit_sphere" || s.name == "torus_R2_r1";
+    EXPECT_EQ(e.shape, closed ? SdfShape::solid : SdfShape::sheet) << s.name << ": " << e.reason;
+    std::cout << s.name << " (degree " << s.implicit.total_degree() << "): " << to_string(e.shape) << " in " << ms
+              << " ms: " << e.reason << '\n';
   }
 }
 

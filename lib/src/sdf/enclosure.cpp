@@ -47,17 +47,48 @@ struct Facet {
   Polynomial g;
 };
 
+// A piece of a facet: its sides (one per free variable) and F's Bernstein
+// coefficients on it.
 struct Piece {
-  std::vector<Interval> sides;  // one per free variable
+  std::vector<Interval> sides;
+  BernsteinPatch patch;
   std::size_t depth = 0;
 };
 
-BernsteinPatch bernstein_on(const Facet& facet, const Piece& piece, const Budget& budget) {
+// The Bernstein coefficients of the two halves of `patch` along its axis `axis` (0 or
+// 1), by de Casteljau's algorithm at 1/2 on every line of coefficients along it:
+// exact, and far cheaper than composing F with each half's affine map again.
+std::pair<BernsteinPatch, BernsteinPatch> halve(const BernsteinPatch& patch, std::size_t axis) {
+  BernsteinPatch lower = patch, upper = patch;
+  const std::size_t n = (axis == 0 ? patch.extent0 : patch.extent1) - 1;
+  const std::size_t lines = axis == 0 ? patch.extent1 : patch.extent0;
+  const std::size_t stride = axis == 0 ? patch.extent1 : 1;
+  std::vector<mpq_class> work(n + 1);
+  for (std::size_t line = 0; line < lines; ++line) {
+    const std::size_t first = axis == 0 ? line : line * patch.extent1;
+    for (std::size_t k = 0; k <= n; ++k) work[k] = patch.b[first + k * stride];
+    // After round r, work[0] is the lower half's coefficient r and work[n − r] the
+    // upper half's coefficient n − r.
+    for (std::size_t r = 1; r <= n; ++r) {
+      for (std::size_t k = 0; k + r <= n; ++k) {
+        work[k] += work[k + 1];
+        mpq_div_2exp(work[k].get_mpq_t(), work[k].get_mpq_t(), 1);
+      }
+      lower.b[first + r * stride] = work[0];
+      upper.b[first + (n - r) * stride] = work[n - r];
+    }
+  }
+  return {std::move(lower), std::move(upper)};
+}
+
+// F's Bernstein coefficients on the facet's sub-box `sides`: compose with the affine
+// map from [0, 1]^k, then convert the power basis along each free variable.
+BernsteinPatch bernstein_on(const Facet& facet, const std::vector<Interval>& sides, const Budget& budget) {
   const RingPtr& ring = facet.g.ring();
   std::vector<Polynomial> values;
   for (std::size_t v = 0; v < ring->num_variables(); ++v) values.push_back(Polynomial::variable(ring, v));
   for (std::size_t j = 0; j < facet.free.size(); ++j) {
-    const Interval& side = piece.sides[j];
+    const Interval& side = sides[j];
     values[facet.free[j]] = Polynomial::constant(ring, side.first) +
                             Polynomial::variable(ring, facet.free[j]).scaled(side.second - side.first);
   }
@@ -153,30 +184,40 @@ class BoundarySign {
       facet.free.push_back(j);
       root.sides.push_back(box_[j]);
     }
+    root.patch = bernstein_on(facet, root.sides, budget_);
     std::vector<Piece> pending{root};
     std::size_t examined = 0;
     while (!pending.empty()) {
       budget_.check(kWhere);
       Piece piece = std::move(pending.back());
       pending.pop_back();
-      if (++examined > params_.max_pieces) return undecided(facet, "more than " + std::to_string(params_.max_pieces));
-      const BernsteinPatch patch = bernstein_on(facet, piece, budget_);
-      if (!corners_agree(facet, piece, patch)) return false;
+      if (++examined > params_.max_pieces) {
+        return undecided(facet, "more than " + std::to_string(params_.max_pieces) + " pieces");
+      }
+      if (!corners_agree(facet, piece, piece.patch)) return false;
       bool strict = true;
-      for (const mpq_class& c : patch.b) strict = strict && sgn(c) == sign_;
+      for (const mpq_class& c : piece.patch.b) strict = strict && sgn(c) == sign_;
       if (strict) continue;
-      if (piece.depth >= params_.max_depth) return undecided(facet, "a piece at depth " + std::to_string(piece.depth));
-      std::size_t longest = 0;
-      for (std::size_t j = 1; j < piece.sides.size(); ++j) {
-        if (piece.sides[j].second - piece.sides[j].first > piece.sides[longest].second - piece.sides[longest].first) {
+      if (piece.depth >= params_.max_depth) {
+        return undecided(facet, "still mixed signs after " + std::to_string(piece.depth) + " bisections");
+      }
+      // Bisect the longest side among the variables F depends on (halving another
+      // changes no coefficient).
+      std::optional<std::size_t> longest;
+      for (std::size_t j = 0; j < piece.sides.size(); ++j) {
+        if ((j == 0 ? piece.patch.extent0 : piece.patch.extent1) < 2) continue;
+        if (!longest ||
+            piece.sides[j].second - piece.sides[j].first > piece.sides[*longest].second - piece.sides[*longest].first) {
           longest = j;
         }
       }
-      Piece lower = piece, upper = piece;
-      const Rational middle = (piece.sides[longest].first + piece.sides[longest].second) / Rational(2);
-      lower.sides[longest].second = middle;
-      upper.sides[longest].first = middle;
-      lower.depth = upper.depth = piece.depth + 1;
+      // Constant on the piece: its corners, which agreed, are all its coefficients.
+      if (!longest) continue;
+      auto [low, high] = halve(piece.patch, *longest);
+      const Rational middle = (piece.sides[*longest].first + piece.sides[*longest].second) / Rational(2);
+      Piece lower{piece.sides, std::move(low), piece.depth + 1}, upper{piece.sides, std::move(high), piece.depth + 1};
+      lower.sides[*longest].second = middle;
+      upper.sides[*longest].first = middle;
       pending.push_back(std::move(lower));
       pending.push_back(std::move(upper));
     }
@@ -185,7 +226,7 @@ class BoundarySign {
 
   bool undecided(const Facet& facet, const std::string& what) {
     reason_ = "undecided: the sign of F on the facet " + f_.ring()->variables()[facet.axis] + " = " +
-              to_string(facet.value) + " was not proven (" + what + " pieces)";
+              to_string(facet.value) + " was not proven (" + what + ")";
     return false;
   }
 
