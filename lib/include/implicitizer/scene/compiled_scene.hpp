@@ -7,9 +7,11 @@
 /// own freedoms: fused multiply-adds, its sin/cos/tan for angles given as uniforms;
 /// docs/sdf.md, "Scenes", lists the measured differences on llvmpipe).
 ///
-/// The GLSL defines `float NAME_sdf(vec3 p)`, negative inside; before it, the uniform
-/// declarations and the helpers of the node kinds present in the scene, and only
-/// those, each prefixed `NAME_` so that two scenes can be pasted into one shader.
+/// The GLSL defines `float NAME_sdf(vec3 p)`, negative inside (a sheet leaf has no
+/// inside: sdf_shape.hpp; `shell` gives it one); a plane curve's (SceneParams::
+/// dimension 2) is `float NAME_sdf(vec2 p)`. Before it, the uniform declarations and
+/// the helpers of the node kinds present in the scene, and only those, each prefixed
+/// `NAME_` so that two scenes can be pasted into one shader.
 ///
 /// Safe mode. Every node's value v then satisfies, at every point p,
 ///     v(p) > 0  ⇒  v(p) ≤ dist(p, {v ≤ 0})   and   v(p) < 0  ⇒  −v(p) ≤ dist(p, {v ≥ 0}),
