@@ -198,7 +198,8 @@ void run_safe_case(const Case& c) {
       EXPECT_GE(gpu[i], 0.0f) << where;
     }
     if (gpu[i] == cpu) ++identical;
-    if (cpu != 0) worst_relative = std::max(worst_relative, std::fabs(static_cast<double>(gpu[i]) - cpu) / std::fabs(cpu));
+    if (cpu != 0)
+      worst_relative = std::max(worst_relative, std::fabs(static_cast<double>(gpu[i]) - cpu) / std::fabs(cpu));
     if (gpu[i] == 0) continue;
     ++nonzero;
     // The guarantee, for the GPU's value.
@@ -226,15 +227,16 @@ void run_safe_case(const Case& c) {
         }
       }
     }
-    const float m = std::max(std::fabs((x - centre[0]) * s), std::max(std::fabs((y - centre[1]) * s),
-                                                                      std::fabs((z - centre[2]) * s)));
+    const float m = std::max(std::fabs((x - centre[0]) * s),
+                             std::max(std::fabs((y - centre[1]) * s), std::fabs((z - centre[2]) * s)));
     if (m <= SafeSdf::kFarField && c.shape == SdfShape::solid) {
       ++sign_checked;
       EXPECT_EQ(gpu[i] < 0 ? -1 : 1, sign) << where;
     }
   }
-  std::cout << c.name << " (safe): " << gpu.size() << " points, " << identical << " bit-identical to the C++ float run; "
-            << nonzero << " nonzero (" << sign_checked << " signs checked); worst |gpu - cpu|/|cpu| " << worst_relative;
+  std::cout << c.name << " (safe): " << gpu.size() << " points, " << identical
+            << " bit-identical to the C++ float run; " << nonzero << " nonzero (" << sign_checked
+            << " signs checked); worst |gpu - cpu|/|cpu| " << worst_relative;
   if (worst_of_distance > 0) std::cout << ", worst |gpu|/distance " << worst_of_distance;
   std::cout << '\n';
   EXPECT_GT(nonzero, static_cast<int>(gpu.size()) / 2);
@@ -260,12 +262,14 @@ void run_or_skip(const Case& c) {
 // ((x²+y²+z²+R²−r²)² − 4R²(x²+y²)), Steiner's surface, and the extremes of
 // docs/sdf.md §4 (coefficients 1e30 and 1e-30, a radius of 1e12 far from the origin,
 // a radius of 1e-6).
-const Case kSphere = {
-    "sphere", "x^2+y^2+z^2-1", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2}, {2, 2, 2}, {0, 0, 0}, 1};
-const Case kTorus = {"torus", "(x^2+y^2+z^2+3)^2-16*(x^2+y^2)", {"-3", "-3", "-1", "3", "3", "1"}, {-3, -3, -1},
-                     {3, 3, 1}, {0, 0, 0}, 0};
-const Case kSteiner = {"steiner", "x^2*y^2+y^2*z^2+z^2*x^2-x*y*z", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2},
-                       {2, 2, 2}, {0, 0, 0}, 0};
+const Case kSphere = {"sphere", "x^2+y^2+z^2-1", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2}, {2, 2, 2}, {0, 0, 0},
+                      1};
+const Case kTorus = {
+    "torus", "(x^2+y^2+z^2+3)^2-16*(x^2+y^2)", {"-3", "-3", "-1", "3", "3", "1"}, {-3, -3, -1}, {3, 3, 1}, {0, 0, 0},
+    0};
+const Case kSteiner = {
+    "steiner", "x^2*y^2+y^2*z^2+z^2*x^2-x*y*z", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2}, {2, 2, 2}, {0, 0, 0},
+    0};
 const Case kBigSphere = {
     "big", "10^30*(x^2+y^2+z^2-1)", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2}, {2, 2, 2}, {0, 0, 0}, 1};
 const Case kFarSphere = {"far",

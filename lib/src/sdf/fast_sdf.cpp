@@ -49,8 +49,7 @@ std::string FastSdf::to_glsl(const std::string& function) const {
   out += "  }\n";
   out += program_.to_glsl("  ");
   out += "  float d = g / max(sqrt(gu * gu + gv * gv + gw * gw), " +
-         format_glsl_float(static_cast<float>(kGradientFloor)) + ") * " + format_glsl_float(half_extent_float_) +
-         ";\n";
+         format_glsl_float(static_cast<float>(kGradientFloor)) + ") * " + format_glsl_float(half_extent_float_) + ";\n";
   out += sheet ? "  return max(abs(d), box);\n" : "  return max(d, box);\n";
   out += "}\n";
   return out;

@@ -221,8 +221,8 @@ std::string SafeSdf::to_glsl(const std::string& function) const {
   out += "  if (g_value >= 0.0) {\n    return max(box, radius) * " + f(k.half_extent) + " * " + f(k.out_shrink) +
          ";\n  }\n";
   out += "  if (box > 0.0) {\n    return box * " + f(k.half_extent) + " * " + f(k.out_shrink) + ";\n  }\n";
-  out += "  float inner = max(" + f(k.box_half_inner) + " - max(abs_u, max(abs_v, abs_w)) * " + f(k.u_grow) +
-         ", 0.0);\n";
+  out +=
+      "  float inner = max(" + f(k.box_half_inner) + " - max(abs_u, max(abs_v, abs_w)) * " + f(k.u_grow) + ", 0.0);\n";
   out += "  return -(min(radius, inner) * " + f(k.half_extent) + " * " + f(k.out_shrink) + ");\n";
   out += "}\n";
   return out;

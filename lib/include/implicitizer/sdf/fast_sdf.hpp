@@ -37,8 +37,8 @@
 
 #include "implicitizer/polynomial/polynomial.hpp"
 #include "implicitizer/sdf/polynomial_program.hpp"
-#include "implicitizer/sdf/sdf_shape.hpp"
 #include "implicitizer/sdf/scene_frame.hpp"
+#include "implicitizer/sdf/sdf_shape.hpp"
 
 namespace implicitizer {
 
