@@ -66,7 +66,7 @@ TEST(MarchRay, EveryMethodAgreesWithExactOnSphereTorusSteiner) {
   for (const test::NamedSurface& surface : test::agreement_surfaces()) {
     for (SdfMode mode : {SdfMode::fast, SdfMode::safe}) {
       const RenderTarget target = implicit_target(surface.equation, surface.box, mode);
-      const CameraSpec camera = default_camera(target);
+      const CameraSpec camera = seed_camera(target);
       const MarchParams params = default_render_march_params(target, camera);
       const auto exact = test::march_pixels(target, camera, kSize, kSize, MarchMethod::exact, params);
       const auto exact_hits = std::count_if(exact.begin(), exact.end(), [](const MarchResult& r) { return r.hit; });
@@ -97,7 +97,7 @@ TEST(MarchRay, UncheckedNewtonFindsFartherRoots) {
   constexpr std::size_t kSize = 96;
   for (const test::NamedSurface& surface : test::agreement_surfaces()) {
     const RenderTarget target = implicit_target(surface.equation, surface.box, SdfMode::fast);
-    const CameraSpec camera = default_camera(target);
+    const CameraSpec camera = seed_camera(target);
     const MarchParams checked = default_render_march_params(target, camera);
     MarchParams unchecked = checked;
     unchecked.check_newton_steps = false;
@@ -124,7 +124,7 @@ TEST(MarchRay, UncheckedNewtonFindsFartherRoots) {
 TEST(MarchRay, EnhancedSpendsNoMoreEvaluationsThanSphere) {
   for (const test::NamedSurface& surface : test::agreement_surfaces()) {
     const RenderTarget target = implicit_target(surface.equation, surface.box);
-    const CameraSpec camera = default_camera(target);
+    const CameraSpec camera = seed_camera(target);
     const MarchParams params = default_render_march_params(target, camera);
     auto total = [&](MarchMethod method) {
       std::uint64_t sum = 0;

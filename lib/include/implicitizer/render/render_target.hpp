@@ -15,6 +15,12 @@
 /// coefficients are of size ≤ 1, so double evaluation near the box is well
 /// conditioned), and the exact marcher (march_ray.hpp), which isolates the first
 /// root of F on the ray. Other scenes get normals by the tetrahedron technique.
+///
+/// Shape and sides. The target knows what its value describes (shape()): a single
+/// polynomial leaf is a solid or a sheet (PolynomialLeaf::shape()); any other scene
+/// is drawn as a solid (its value may hold sheets through `shell`, which makes them
+/// thin solids). A sheet has two sides, told apart by the sign of F: shading.hpp
+/// colours the one a ray sees, from ∇G at the hit (docs/render.md §5).
 
 #include <array>
 #include <cstdint>
@@ -27,6 +33,7 @@
 #include "implicitizer/scene/compiled_scene.hpp"
 #include "implicitizer/scene/scene_node.hpp"
 #include "implicitizer/sdf/polynomial_program.hpp"
+#include "implicitizer/sdf/sdf_shape.hpp"
 
 namespace implicitizer {
 
@@ -73,6 +80,10 @@ class RenderTarget {
   /// Returns (0, 0, 0) when neither gives a direction (a flat or NaN value).
   std::array<double, 3> normal(const std::array<double, 3>& p, std::uint64_t* evaluations = nullptr) const;
 
+  /// The unit gradient of G at p (∇F's direction: it points to where F > 0), when the
+  /// target has an algebraic surface and the gradient there is finite and nonzero.
+  std::optional<std::array<double, 3>> equation_gradient(const std::array<double, 3>& p) const;
+
   /// The tetrahedron technique: N = Σ_i k_i f(p + h·k_i), k_i the vertices
   /// (1,−1,−1), (−1,−1,1), (−1,1,−1), (1,1,1), normalised; four evaluations.
   /// Why it works: Taylor gives f(p + h k_i) = f(p) + h k_i·∇f + O(h²); Σ k_i = 0
@@ -85,13 +96,24 @@ class RenderTarget {
   /// The algebraic surface, when the scene is a single polynomial leaf.
   const std::optional<AlgebraicSurface>& algebraic() const { return algebraic_; }
 
-  /// The scene's length unit: half the largest half side of the scene box (1 for
+  /// The object's box: the leaf's frame box when the scene is one polynomial leaf
+  /// (for a parametric leaf without a box, fitted to its patch), else the scene box
+  /// of SceneParams. The camera frames it (render_image.hpp default_camera).
+  const std::array<double, 3>& box_lo() const { return box_lo_; }
+  /// See box_lo().
+  const std::array<double, 3>& box_hi() const { return box_hi_; }
+  /// The scene's length unit: half the largest half side of the object's box (1 for
   /// the default box [−2, 2]³). Defaults of the renderer given in the first
-  /// thesis' units (its hit threshold 1e-4, its miss distance 100, its eye
-  /// (3, 3, 5), its shadow and occlusion distances) are multiplied by it.
+  /// thesis' units (its hit threshold 1e-4, its miss distance 100, its shadow and
+  /// occlusion distances) are multiplied by it.
   double length_unit() const { return length_unit_; }
-  /// The scene box's centre (the default look-at point).
+  /// The object box's centre (the default look-at point).
   const std::array<double, 3>& box_centre() const { return box_centre_; }
+  /// What the value describes: the single polynomial leaf's shape, else solid.
+  SdfShape shape() const { return shape_; }
+  /// 3: a scene in space; 2: a plane curve, evaluated at z = 0 (SceneParams::dimension),
+  /// drawn in the plane by render_curve.hpp.
+  int dimension() const { return dimension_; }
   /// The compiled scene.
   const CompiledScene& scene() const { return scene_; }
   /// The mode it was compiled in.
@@ -105,7 +127,9 @@ class RenderTarget {
   CompiledScene scene_;
   EvaluationPrecision precision_;
   double length_unit_ = 1;
-  std::array<double, 3> box_centre_{};
+  std::array<double, 3> box_lo_{}, box_hi_{}, box_centre_{};
+  SdfShape shape_ = SdfShape::solid;
+  int dimension_ = 3;
   std::optional<AlgebraicSurface> algebraic_;
 };
 
