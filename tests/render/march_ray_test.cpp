@@ -2,7 +2,8 @@
 // on the sphere, the torus and Steiner's surface (hit masks and depths, pixel by
 // pixel); the documented behaviour of single rays (out of steps is a counted miss,
 // starting inside, grazing, far away, through a singular point); the overlap
-// fallback of enhanced sphere tracing; the refusals.
+// fallback of enhanced sphere tracing; a sheet's crossings are hits in fast mode; the
+// refusals.
 
 #include "implicitizer/render/march_ray.hpp"
 
@@ -117,6 +118,32 @@ TEST(MarchRay, UncheckedNewtonFindsFartherRoots) {
         EXPECT_LT(thesis.within, ours.within) << surface.name << " " << to_string(method);
       }
     }
+  }
+}
+
+// A sheet (the saddle z = s^2 - t^2 over [-1, 1]^2, a trimmed patch) in fast mode: its
+// value is >= 0 on both sides and F/|∇F| is not a bound, so steps jump across it;
+// without the sign test of G (SheetCrossing) a third of the saddle's middle was holes.
+// Every value-based method now agrees with exact (which skips roots off the patch).
+TEST(MarchRay, FastMarchesDoNotStepThroughASheet) {
+  SceneNode node;
+  node.kind = NodeKind::parametric;
+  node.leaf.coordinates = {"s", "t", "s^2-t^2"};
+  node.leaf.domain = {{Rational(-1), Rational(1)}, {Rational(-1), Rational(1)}};
+  const RenderTarget saddle = RenderTarget::compile(node, SceneParams{});
+  ASSERT_EQ(saddle.shape(), SdfShape::sheet);
+  constexpr std::size_t kSize = 64;
+  const CameraSpec camera = default_camera(saddle);
+  const MarchParams params = default_render_march_params(saddle, camera);
+  const auto exact = test::march_pixels(saddle, camera, kSize, kSize, MarchMethod::exact, params);
+  std::size_t exact_hits = 0;
+  for (const MarchResult& r : exact) exact_hits += r.hit;
+  EXPECT_GT(exact_hits, kSize * kSize / 8);
+  for (MarchMethod method : {MarchMethod::sphere, MarchMethod::enhanced, MarchMethod::newton}) {
+    const Agreement g =
+        compare(test::march_pixels(saddle, camera, kSize, kSize, method, params), exact, saddle.length_unit());
+    EXPECT_GE(g.iou, 0.99) << to_string(method);
+    EXPECT_GE(g.within, 0.99) << to_string(method);
   }
 }
 

@@ -49,10 +49,11 @@ RenderTarget RenderTarget::compile(const SceneNode& root, const SceneParams& opt
   const SceneFrame frame = make_scene_frame(leaf.frame_box());
   Polynomial framed = frame_polynomial(leaf.equation(), frame, budget);
   PolynomialProgram program = PolynomialProgram::compile(framed);
+  PolynomialProgram value_program = PolynomialProgram::compile(framed, ProgramOutputs::value);
   auto context = std::make_shared<const RayPolynomialContext>(framed);
-  AlgebraicSurface surface{leaf.equation(),    std::move(framed),  {}, to_double(frame.scale),
-                           std::move(program), std::move(context), {}, {},
-                           leaf.trimmed()};
+  AlgebraicSurface surface{leaf.equation(),    std::move(framed),       {}, to_double(frame.scale),
+                           std::move(program), std::move(context),      {}, {},
+                           leaf.trimmed(),     std::move(value_program)};
   for (std::size_t i = 0; i < 3; ++i) surface.centre[i] = to_double(frame.centre[i]);
   if (surface.trimmed) {
     surface.lo = {leaf.trim_lo().x, leaf.trim_lo().y, leaf.trim_lo().z};

@@ -58,6 +58,9 @@ struct AlgebraicSurface {
   /// trimming box.
   std::array<double, 3> lo{}, hi{};
   bool trimmed = false;  ///< a trimmed parametric patch: an unsigned sheet, no inside
+  /// G alone (run in double): the sign tests with which a march notices that it
+  /// stepped across a sheet (march_ray.hpp).
+  PolynomialProgram value_program;
 };
 
 /// A scene ready to be ray-marched. Copyable; every method is const and thread-safe.
