@@ -453,6 +453,8 @@ async function drawSurface(source, equation, box, name, busy) {
   state.drawn = drawn;
   ui.canvas.dataset.mode = mode;
   ui.canvas.dataset.equation = equation;
+  // The object as sent, so that the same view can be asked of POST /v1/render.
+  ui.canvas.dataset.request = JSON.stringify({ ...requestObject(source), shape });
   return answer;
 }
 
