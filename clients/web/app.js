@@ -418,8 +418,11 @@ async function drawSurface(source, equation, box, name, busy) {
   let side = null;
   if (answer.shape === 'sheet' && dimension === 3) {
     busy.setLabel('Building the sheet\'s side function…');
+    // A scene of one implicit leaf rather than {implicit}: a scene is in space even
+    // when F has no z (a cylinder over a curve), where {implicit} would be a plane curve.
     const implicit = answer.leaves?.[0]?.implicit || equation;
-    const signed = await sdf({ implicit, shape: 'solid', mode: 'fast', box: answerBox, name: `${name}_side`, timeoutMs }, { signal });
+    const scene = { type: 'implicit', equation: implicit, shape: 'solid' };
+    const signed = await sdf({ scene, mode: 'fast', box: answerBox, name: `${name}_side`, timeoutMs }, { signal });
     side = { glsl: signed.glsl, functionName: signed.function };
   }
   showGlsl(answer);

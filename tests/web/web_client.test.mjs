@@ -530,9 +530,9 @@ test('a plane curve is drawn in 2-D, as the CPU renderer draws it', async (t) =>
   }
   t.diagnostic(`lemniscate: ${gpuLine} line pixels, ${light} light (paper, grid, tint) of ${width * height}`);
   assert.ok(light > 0.8 * width * height, 'a light 2-D picture, not a shaded solid');
-  // The figure eight spans the box's width: its length in pixels is several box widths.
+  // The figure eight is 5.24 units long (a = 1): at least 3 units of it in line pixels.
   const scale = Math.min(width / (box[2] - box[0]), height / (box[3] - box[1]));
-  assert.ok(gpuLine > 2 * (box[2] - box[0]) * scale, `the curve is drawn (${gpuLine} line pixels)`);
+  assert.ok(gpuLine > 3 * scale, `the curve is drawn (${gpuLine} line pixels, ${scale} px per unit)`);
   const png = await renderSameView(v, {}, t);
   assert.equal(png.width, width);
   let cpuLine = 0, diff = 0;
