@@ -147,6 +147,25 @@ TEST(MarchRay, FastMarchesDoNotStepThroughASheet) {
   }
 }
 
+// Shape auto orients a solid so that its inside is the enclosed region: 1 − x² − y² − z²
+// is negative on the box's faces, so the leaf's value is that of −F. The exact method
+// tests the sign of G where the ray enters the box: G must be −F's, else the whole
+// box would read as inside and every ray would hit where it enters (t = 3 here).
+TEST(MarchRay, ExactFollowsANegatedSolid) {
+  SceneNode node = test::implicit_node("1-x^2-y^2-z^2");
+  node.leaf.shape = SdfShape::automatic;
+  const RenderTarget ball = RenderTarget::compile(node, SceneParams{});
+  ASSERT_EQ(ball.shape(), SdfShape::solid);
+  const Ray down{{0, 0, 5}, {0, 0, -1}};
+  const MarchParams params = default_march_params(ball);
+  const MarchResult exact = march_ray(ball, down, MarchMethod::exact, params);
+  ASSERT_TRUE(exact.hit);
+  EXPECT_NEAR(exact.t, 4, 1e-9);
+  const MarchResult sphere = march_ray(ball, down, MarchMethod::sphere, params);
+  ASSERT_TRUE(sphere.hit);
+  EXPECT_NEAR(sphere.t, 4, 1e-3);
+}
+
 // Enhanced sphere tracing costs no more than sphere tracing on these surfaces.
 TEST(MarchRay, EnhancedSpendsNoMoreEvaluationsThanSphere) {
   for (const test::NamedSurface& surface : test::agreement_surfaces()) {

@@ -100,6 +100,25 @@ TEST(RenderCurve, ACircleIsALineOnTheCurveWithItsInsideTinted) {
   EXPECT_LE(colour_distance(r.image.pixel(gx, gy), style.grid), 40);
 }
 
+TEST(RenderCurve, AnOpenCurveIsASheetWithNoInside) {
+  // The parabola y = x² leaves its box: shape auto makes it a sheet, drawn as a line
+  // with nothing tinted on either side.
+  SceneNode node = test::implicit_node("y-x^2");
+  node.leaf.shape = SdfShape::automatic;
+  const RenderTarget parabola =
+      RenderTarget::compile(node, SceneParams{SdfMode::fast, SceneBox::default_box(), "c", "scene", 2});
+  ASSERT_EQ(parabola.shape(), SdfShape::sheet);
+  const CurveStyle style;
+  const RenderResult r = render_curve(parabola, 100, 100);
+  // (0.3, 1.3) lies above the parabola, (0.3, -1.3) below; both are paper (off the grid).
+  const CurveView v = curve_view(parabola, 100, 100);
+  for (double y : {1.3, -1.3}) {
+    const auto px = static_cast<std::size_t>(50 + 0.3 * v.scale), py = static_cast<std::size_t>(50 - y * v.scale);
+    EXPECT_LE(colour_distance(r.image.pixel(px, py), style.paper), 1) << y;
+  }
+  EXPECT_GT(r.stats.hits, 100u);
+}
+
 TEST(RenderCurve, SafeModeDrawsTheSameCurve) {
   // The safe value is a lower bound of the distance: the line can only widen.
   const RenderTarget fast = curve_target("x^2+y^2-1", SceneBox::default_box(), SdfMode::fast);

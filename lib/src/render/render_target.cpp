@@ -47,7 +47,11 @@ RenderTarget RenderTarget::compile(const SceneNode& root, const SceneParams& opt
   const PolynomialLeaf& leaf = scene.leaves().front();
   target.shape_ = leaf.shape();
   const SceneFrame frame = make_scene_frame(leaf.frame_box());
-  Polynomial framed = frame_polynomial(leaf.equation(), frame, budget);
+  // G has the sign of the leaf's value near the surface: −F for a solid whose enclosed
+  // region is where F > 0 (PolynomialLeaf::negated()), so that the exact method's
+  // "G < 0 where the segment starts" still means inside. Sheets are never negated:
+  // their sides keep F's own sign (F > 0 is the warm side).
+  Polynomial framed = frame_polynomial(leaf.negated() ? -leaf.equation() : leaf.equation(), frame, budget);
   PolynomialProgram program = PolynomialProgram::compile(framed);
   PolynomialProgram value_program = PolynomialProgram::compile(framed, ProgramOutputs::value);
   auto context = std::make_shared<const RayPolynomialContext>(framed);

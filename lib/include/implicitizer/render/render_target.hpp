@@ -45,8 +45,11 @@ enum class EvaluationPrecision : std::uint8_t {
 
 /// The algebraic surface of a scene that is one polynomial leaf.
 struct AlgebraicSurface {
-  Polynomial equation;             ///< F(x, y, z): the surface is F = 0 (a parametric leaf's implicitized equation)
-  Polynomial framed;               ///< G(u, v, w) = F(centre + u/scale)/M, exact; G < 0 exactly where F < 0
+  Polynomial equation;  ///< F(x, y, z): the surface is F = 0 (a parametric leaf's implicitized equation)
+  /// G(u, v, w) = ±F(centre + u/scale)/M, exact: −F where the leaf is a solid negated
+  /// (PolynomialLeaf::negated()), so that G < 0 exactly where the value's surface has
+  /// its inside; +F for sheets.
+  Polynomial framed;
   std::array<double, 3> centre{};  ///< the frame's centre c (exactly a float)
   double scale = 1;                ///< the frame's scale s (exactly a float): u = (p − c)·s
   PolynomialProgram program;       ///< G and ∇G (run in double)
