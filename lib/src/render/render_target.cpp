@@ -59,15 +59,12 @@ RenderTarget RenderTarget::compile(const SceneNode& root, const SceneParams& opt
                            std::move(program), std::move(context),      {}, {},
                            leaf.trimmed(),     std::move(value_program)};
   for (std::size_t i = 0; i < 3; ++i) surface.centre[i] = to_double(frame.centre[i]);
-  if (surface.trimmed) {
-    surface.lo = {leaf.trim_lo().x, leaf.trim_lo().y, leaf.trim_lo().z};
-    surface.hi = {leaf.trim_hi().x, leaf.trim_hi().y, leaf.trim_hi().z};
-  } else {
-    // The leaf is the solid F <= 0 clipped to its box |u_i| <= 1 (docs/sdf.md §3).
-    for (std::size_t i = 0; i < 3; ++i) {
-      surface.lo[i] = surface.centre[i] - 1 / surface.scale;
-      surface.hi[i] = surface.centre[i] + 1 / surface.scale;
-    }
+  // The value is clipped to the frame's cube |u_i| <= 1 (docs/sdf.md §3), a solid's
+  // caps and a sheet's ends alike; a trimmed patch lies inside it too, and the exact
+  // method passes the roots off the patch by the value there (march_ray.cpp).
+  for (std::size_t i = 0; i < 3; ++i) {
+    surface.lo[i] = surface.centre[i] - 1 / surface.scale;
+    surface.hi[i] = surface.centre[i] + 1 / surface.scale;
   }
   target.algebraic_ = std::move(surface);
   return target;

@@ -56,9 +56,9 @@ struct AlgebraicSurface {
   /// G prepared for exact root isolation along rays (shared: one per target).
   std::shared_ptr<const RayPolynomialContext> ray_context;
   /// The scene's surface lies in [lo, hi] and its value is positive outside: the
-  /// leaf's box |u_i| ≤ 1 (the solid F ≤ 0 clipped to it: F's zeros inside plus the
-  /// caps where the faces cut the solid; docs/sdf.md §3), or for a trimmed patch the
-  /// trimming box.
+  /// leaf's box |u_i| ≤ 1 (a solid F ≤ 0 clipped to it: F's zeros inside plus the caps
+  /// where the faces cut the solid; a sheet: F's zeros inside, or a trimmed patch's,
+  /// which lies inside too; docs/sdf.md §3).
   std::array<double, 3> lo{}, hi{};
   bool trimmed = false;  ///< a trimmed parametric patch: an unsigned sheet, no inside
   /// G alone (run in double): the sign tests with which a march notices that it
