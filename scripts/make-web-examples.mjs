@@ -14,8 +14,12 @@
 // test (tests/web) runs `buildExamples()` to check that it still matches shared/.
 //
 // Each surface gets the box the benchmarks and the gallery frame it in
-// (tests/sdf/reference_distance.hpp `public_surface_box`, scripts/render-examples.sh),
-// so the preview shows it as docs/render.md §12 does.
+// (tests/sdf/reference_distance.hpp `public_surface_box`, scripts/render-examples.sh):
+// the page frames the implicit equation with it. The parametric form is drawn as the
+// patch X(D) over its domain D, in a box the server fits to the patch (docs/sdf.md,
+// "Patches"); open surfaces get a domain that shows their shape (DOMAINS), closed
+// rational ones (sphere, torus, Steiner's surface) keep the default, the whole plane.
+// Two examples are the page's own (EXTRA_EXAMPLES): a bicubic patch and a plane curve.
 import fs from 'node:fs';
 import path from 'node:path';
 import process from 'node:process';
@@ -33,6 +37,51 @@ function boxOf(name) {
   if (name === 'biquadratic_patch') return cube(2, 4);
   return cube(0, 2);
 }
+
+// The parameter domain s0, s1, t0, t1 (exact numbers as text) of a public surface
+// whose default domain ([0, 1]^2 for a polynomial or unbounded parametrization) shows
+// too little of it; absent: the default.
+const DOMAINS = {
+  plane: ['-1', '1', '-1', '1'],
+  elliptic_paraboloid: ['-1', '1', '-1', '1'],
+  hyperbolic_paraboloid: ['-1', '1', '-1', '1'],
+  whitney_umbrella: ['-1', '1', '-1', '1'],
+  // s = tan(θ/2): [-2, 2] is θ within ±127°, three quarters of the circle, so both
+  // sides of the sheet show; t is the height.
+  cylinder_rational: ['-2', '2', '-1', '1'],
+  cone_rational: ['-2', '2', '-1', '1'],
+  enneper: ['-3/2', '3/2', '-3/2', '3/2'],
+  bicubic_graph: ['-1', '1', '-1', '1'],
+};
+
+// Examples that are not benchmark surfaces, with their implicit equations as
+// `implicitizer implicitize --x X --y Y [--z Z]` computes them (verified: the
+// parametrization substituted gives 0).
+const EXTRA_EXAMPLES = [
+  {
+    name: 'bicubic_patch',
+    label: 'Bicubic patch',
+    x: 's*(1+t^2)/2',
+    y: 't',
+    z: 's^3*t-s*t^3',
+    degree: 8,
+    domain: ['-1', '1', '-1', '1'],
+    box: [-1, -1, -1, 1, 1, 1],
+    implicit: '2*x*y^7+y^6*z+4*x*y^5+3*y^4*z-8*x^3*y+2*x*y^3+3*y^2*z+z',
+    group: 'page',
+  },
+  {
+    name: 'lemniscate',
+    label: 'Lemniscate of Bernoulli (plane curve)',
+    x: 't*(1+t^2)/(1+t^4)',
+    y: 't*(1-t^2)/(1+t^4)',
+    z: '',
+    degree: 4,
+    box: [-1.25, -0.75, 1.25, 0.75],
+    implicit: 'x^4+2*x^2*y^2+y^4-x^2+y^2',
+    group: 'page',
+  },
+];
 
 // The menu's names of the public surfaces; a surface not listed gets its name with
 // spaces ("new_surface" -> "New surface").
@@ -63,11 +112,13 @@ export function buildExamples(sharedDir = defaultSharedDir) {
   const examples = surfaces.map((s) => {
     const expected = path.join(bench, 'expected', `${s.name}.txt`);
     const example = { name: s.name, label: labelOf(s.name), x: s.x, y: s.y, z: s.z, degree: s.degree, box: boxOf(s.name) };
+    if (DOMAINS[s.name]) example.domain = DOMAINS[s.name];
     if (fs.existsSync(expected)) example.implicit = fs.readFileSync(expected, 'utf8').trim();
     return example;
   });
+  examples.push(...EXTRA_EXAMPLES);
   const document = {
-    source: 'shared/bench/surfaces_public.json and shared/bench/expected/*.txt; regenerate with node scripts/make-web-examples.mjs',
+    source: 'shared/bench/surfaces_public.json and shared/bench/expected/*.txt, then the page\'s own examples; regenerate with node scripts/make-web-examples.mjs',
     examples,
   };
   // One example per line: readable diffs when shared/ changes.

@@ -1,17 +1,18 @@
 #!/usr/bin/env bash
-# Renders the example images of docs/render.md ("Gallery"): every public surface of
-# shared/bench/surfaces_public.json (given parametrically: --x --y --z, implicitized by
-# the library) and the second thesis's scenes (bench/scenes/*.json), with
-# `implicitizer render`, 256×256, AA 2, method sphere, mode safe, into
-# docs/images/<name>.png.
+# Renders the example images of docs/render.md ("Gallery"): every example of the web
+# page's menu (clients/web/examples.json: the public surfaces of shared/bench, given
+# parametrically, and the page's own bicubic patch and plane curve) and the second
+# thesis's scenes (bench/scenes/*.json), with `implicitizer render`, 256×256, AA 2,
+# method sphere, mode safe, into docs/images/<name>.png.
 #
-#   scripts/render-examples.sh [--binary PATH] [--out DIR] [--surfaces FILE]
+#   scripts/render-examples.sh [--binary PATH] [--out DIR] [--examples FILE]
 #
 # Defaults: --binary build/bin/implicitizer, --out docs/images,
-# --surfaces ../shared/bench/surfaces_public.json. Each surface is framed by the box
-# the benchmarks use (bench/render_accuracy.cpp, tests/sdf/reference_distance.hpp's
-# public_surface_box): [-4, 4]^3 for the torus and Enneper's surface, [-1, 1]^3 for
-# Steiner's, [-2, 6]x[-4, 4]^2 for the biquadratic patch, [-2, 2]^3 otherwise.
+# --examples clients/web/examples.json. Each example is drawn as the patch X(D) over
+# its domain (examples.json "domain"; absent: the default domain, docs/sdf.md
+# "Patches") in the box the library fits to the patch, with shape auto: so the
+# gallery shows what the page's menu shows, and one table (scripts/make-web-examples.mjs)
+# says which domain each surface gets.
 #
 # Idempotent: the renderer is deterministic (an image does not depend on the number
 # of threads), so a second run rewrites the same bytes; each line says whether the
@@ -22,13 +23,13 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 binary="$root/build/bin/implicitizer"
 out="$root/docs/images"
-surfaces="$root/../shared/bench/surfaces_public.json"
+examples="$root/clients/web/examples.json"
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --binary) binary=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
-    --surfaces) surfaces=$2; shift 2 ;;
-    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
+    --examples) examples=$2; shift 2 ;;
+    -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
     *) echo "render-examples.sh: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -36,7 +37,7 @@ if [[ ! -x "$binary" ]]; then
   echo "render-examples.sh: no executable $binary (build it: cmake --build build --target implicitizer)" >&2
   exit 2
 fi
-[[ -r "$surfaces" ]] || { echo "render-examples.sh: cannot read $surfaces" >&2; exit 2; }
+[[ -r "$examples" ]] || { echo "render-examples.sh: cannot read $examples" >&2; exit 2; }
 mkdir -p "$out"
 cd "$root"  # so that the commands printed name bench/scenes/… relative to the repository
 
@@ -44,16 +45,6 @@ common=(--size 256x256 --aa 2 --method sphere --mode safe)
 failed=0
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-
-# box_of NAME: the --box argument for a public surface ("" for the default box).
-box_of() {
-  case "$1" in
-    torus_R2_r1|enneper) echo "-4,-4,-4,4,4,4" ;;
-    steiner_roman) echo "-1,-1,-1,1,1,1" ;;
-    biquadratic_patch) echo "-2,-4,-4,6,4,4" ;;
-    *) echo "" ;;
-  esac
-}
 
 # render NAME ARGS...: renders into a temporary file, then replaces docs/images/NAME.png
 # only if the bytes differ, and reports what it did.
@@ -82,19 +73,18 @@ render() {
   echo "          implicitizer render ${words[*]} -o ${target#"$root"/}"
 }
 
-# The public surfaces, one "name<TAB>x<TAB>y<TAB>z" line each (Python 3 reads the JSON).
-while IFS=$'\t' read -r name x y z; do
-  box=$(box_of "$name")
-  if [[ -n "$box" ]]; then
-    render "$name" --x "$x" --y "$y" --z "$z" --box "$box"
-  else
-    render "$name" --x "$x" --y "$y" --z "$z"
-  fi
+# The examples, one "name<TAB>x<TAB>y<TAB>z<TAB>domain" line each (Python 3 reads the
+# JSON; z and domain may be empty: a plane curve, the default domain).
+while IFS=$'\t' read -r name x y z domain; do
+  args=(--x "$x" --y "$y")
+  [[ -n "$z" ]] && args+=(--z "$z")
+  [[ -n "$domain" ]] && args+=(--domain "$domain")
+  render "$name" "${args[@]}"
 done < <(python3 -c '
 import json, sys
-for s in json.load(open(sys.argv[1])):
-    print("\t".join([s["name"], s["x"], s["y"], s["z"]]))
-' "$surfaces")
+for e in json.load(open(sys.argv[1]))["examples"]:
+    print("\t".join([e["name"], e["x"], e["y"], e.get("z", ""), ",".join(e.get("domain", []))]))
+' "$examples")
 
 for scene in rounded_box tunnel five_spheres; do
   render "$scene" --scene "bench/scenes/$scene.json"

@@ -120,9 +120,26 @@ export function implicitize({ x, y, z, method, timeoutMs }, options) {
   return postJson('/v1/implicitize', body, options);
 }
 
-/// POST /v1/sdf: {implicit, mode, box, name, timeout_ms} -> {glsl, function, uniforms, ...}.
-export function sdf({ implicit, mode, box, name, timeoutMs }, options) {
-  const body = { implicit, mode, box, name };
+/// POST /v1/sdf for an implicit equation ({implicit}), a parametric surface or curve
+/// ({x, y, z?, domain?}: z empty for a plane curve; domain a list of exact numbers
+/// s0, s1[, t0, t1] as typed, empty for the default) or a scene ({scene}), with the
+/// shape (auto, sheet, solid; not for a scene, whose leaves carry theirs), mode, box
+/// (null: fitted to a patch, else the default) and name -> {glsl, function, shape,
+/// dimension, box (the box actually used), uniforms, ...}.
+export function sdf({ implicit, x, y, z, domain, scene, shape, mode, box, name, timeoutMs }, options) {
+  const body = { mode, name };
+  if (scene !== undefined) {
+    body.scene = scene;
+  } else if (implicit !== undefined) {
+    body.implicit = implicit;
+  } else {
+    body.x = x;
+    body.y = y;
+    if (z) body.z = z;
+    if (domain && domain.length) body.domain = domain;
+  }
+  if (shape) body.shape = shape;
+  if (box) body.box = box;
   if (timeoutMs) body.timeout_ms = timeoutMs;
   return postJson('/v1/sdf', body, options);
 }

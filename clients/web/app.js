@@ -1,5 +1,6 @@
 // The page: inputs → POST /v1/implicitize → the equation and its scripts → POST
-// /v1/sdf → the live preview (preview.js). Errors are shown beside the input they
+// /v1/sdf (the parametric surface itself, over its domain: the patch, in the shape the
+// server picks) → the live preview (preview.js: sheets two-sided, curves flat). Errors are shown beside the input they
 // concern, with the server's position marked; long requests show their elapsed time
 // and can be cancelled (the fetch is aborted, and the server cancels the computation
 // of a client that disconnects).
@@ -8,15 +9,15 @@ import { fillExamplesMenu, loadExamples } from './examples.js';
 import { defaultCamera, Preview, ShaderError } from './preview.js';
 
 const $ = (id) => document.getElementById(id);
-const DEFAULT_BOX = [-2, -2, -2, 2, 2, 2];
 const INITIAL_EXAMPLE = 'torus_R2_r1';
-const FIELDS = ['x', 'y', 'z', 'equation', 'box'];
+const FIELDS = ['x', 'y', 'z', 'domain', 'equation', 'box'];
 
 const ui = {
   tabs: { parametric: $('tab-parametric'), implicit: $('tab-implicit') },
   forms: { parametric: $('form-parametric'), implicit: $('form-implicit') },
   examples: $('examples'),
-  inputs: { x: $('x'), y: $('y'), z: $('z'), equation: $('equation'), box: $('box') },
+  inputs: { x: $('x'), y: $('y'), z: $('z'), domain: $('domain'), equation: $('equation'), box: $('box') },
+  shape: $('shape'),
   method: $('method'),
   timeout: $('timeout'),
   progress: $('progress'),
@@ -54,7 +55,8 @@ const state = {
   mode: 'parametric',
   examples: [],
   busy: null, // the running request: {controller, started, timer, setLabel}
-  drawn: null, // {equation, box, name}: what the preview shows
+  drawn: null, // {source, equation, box, name, mode, shape, answerBox, dimension}: what the preview shows
+  boxFromExample: false, // the box input holds the example's box (refilled when the tab changes)
   glsl: '', // the last GLSL POST /v1/sdf returned
 };
 
@@ -75,26 +77,68 @@ function shortRenderer(name) {
   return (m ? m[1] : name).replace(/ \(0x[0-9a-fA-F]+\)/g, '').replace(/\s+Direct3D.*$/, '');
 }
 
-/// Parses "x0, y0, z0, x1, y1, z1" (commas or spaces). Throws an ApiError-like object
-/// with the position of the first bad number.
-function parseBox(text) {
+// The numbers of a text ("a, b c"), each with its position, for the error caret.
+function numbersOf(text) {
   const parts = [];
   const re = /[^\s,]+/g;
   let m;
   while ((m = re.exec(text))) parts.push({ value: m[0], position: m.index });
+  return parts;
+}
+
+/// Parses "x0, y0, z0, x1, y1, z1" or, for a curve, "x0, y0, x1, y1" (commas or
+/// spaces); empty gives null (the server fits the box to a patch, else [-2, 2]^3).
+/// Throws an ApiError-like object with the position of the first bad number.
+function parseBox(text) {
+  const parts = numbersOf(text);
+  if (parts.length === 0) return null;
   const fail = (message, position) => {
     throw new ApiError({ status: 0, code: 'invalid_box', message, position, field: 'box' });
   };
-  if (parts.length !== 6) fail(`the box needs 6 numbers (x0, y0, z0, x1, y1, z1), not ${parts.length}`, parts[6]?.position ?? text.length);
+  if (parts.length !== 6 && parts.length !== 4) {
+    fail(`the box needs 6 numbers (x0, y0, z0, x1, y1, z1) or, for a curve, 4 (x0, y0, x1, y1), not ${parts.length}`, parts[6]?.position ?? text.length);
+  }
   const numbers = parts.map((p) => {
     const v = Number(p.value);
     if (!Number.isFinite(v)) fail(`'${p.value}' is not a number`, p.position);
     return v;
   });
-  for (let i = 0; i < 3; ++i) {
-    if (!(numbers[i] < numbers[i + 3])) fail(`${'xyz'[i]}0 must be less than ${'xyz'[i]}1`, parts[i + 3].position);
+  const n = numbers.length / 2;
+  for (let i = 0; i < n; ++i) {
+    if (!(numbers[i] < numbers[i + n])) fail(`${'xyz'[i]}0 must be less than ${'xyz'[i]}1`, parts[i + n].position);
   }
   return numbers;
+}
+
+// An exact number as the server reads it: a decimal ("-1.5", "1e-3") or a fraction ("3/2").
+function exactValue(text) {
+  const m = /^([+-]?[0-9.eE+-]+)(?:\/([0-9.eE+-]+))?$/.exec(text);
+  if (!m) return NaN;
+  const v = Number(m[1]) / (m[2] === undefined ? 1 : Number(m[2]));
+  return Number.isFinite(v) ? v : NaN;
+}
+
+/// Parses the parameter domain "s0, s1, t0, t1" (a curve: "s0, s1"); empty gives null
+/// (the server's default domain). The numbers are sent as typed (exact: "-3/2").
+function parseDomain(text, parameters) {
+  const parts = numbersOf(text);
+  if (parts.length === 0) return null;
+  const fail = (message, position) => {
+    throw new ApiError({ status: 0, code: 'invalid_domain', message, position, field: 'domain' });
+  };
+  if (parts.length !== 2 * parameters) {
+    const names = parameters === 1 ? 's0, s1' : 's0, s1, t0, t1';
+    fail(`the domain needs ${2 * parameters} numbers (${names}), not ${parts.length}`, parts[2 * parameters]?.position ?? text.length);
+  }
+  const values = parts.map((p) => {
+    const v = exactValue(p.value);
+    if (Number.isNaN(v)) fail(`'${p.value}' is not a number`, p.position);
+    return v;
+  });
+  for (let i = 0; i < parameters; ++i) {
+    if (!(values[2 * i] < values[2 * i + 1])) fail(`${'st'[i]}0 must be less than ${'st'[i]}1`, parts[2 * i + 1].position);
+  }
+  return parts.map((p) => p.value);
 }
 
 // ---------------------------------------------------------------- errors
@@ -155,7 +199,8 @@ function errorText(error) {
 /// server's field names to this page's inputs. The input is marked invalid, the
 /// offending characters are selected in it, and an excerpt with a caret is shown.
 function showError(error, fieldMap) {
-  const name = error.field !== null ? fieldMap[error.field] : undefined;
+  // "domain[2]" (one bound) is shown beside the domain input.
+  const name = error.field !== null ? fieldMap[error.field] ?? fieldMap[error.field.replace(/\[\d+\]$/, '')] : undefined;
   if (!name) {
     ui.generalError.replaceChildren(errorText(error));
     if (error.field) ui.generalError.append(` (field ${error.field})`);
@@ -287,7 +332,8 @@ function showGlsl(answer) {
   state.glsl = answer.glsl;
   ui.glsl.textContent = answer.glsl;
   const lines = answer.glsl.split('\n').length;
-  ui.glslSummary.textContent = `${answer.function}(vec3 p) · ${answer.mode} mode · ${lines} lines`;
+  const shape = answer.shape ? ` · ${answer.shape}` : '';
+  ui.glslSummary.textContent = `${answer.function}(${answer.dimension === 2 ? 'vec2' : 'vec3'} p) · ${answer.mode} mode${shape} · ${lines} lines`;
   ui.copyGlsl.disabled = false;
 }
 
@@ -334,39 +380,75 @@ async function drawOnServer(drawn, mode, signal) {
   const top = ui.noWebgl.querySelector('p').getBoundingClientRect().bottom - rect.top + 14;
   const width = Math.max(64, Math.min(800, Math.round(rect.width - 54)));
   const height = Math.max(64, Math.min(600, Math.round(rect.height - top - 24)));
-  const camera = defaultCamera(drawn.box);
-  const blob = await renderPng(
-    { implicit: drawn.equation, box: drawn.box, mode, width, height, aa: Number(ui.aa.value), eye: camera.eye, target: camera.target, timeout_ms: 60000 },
-    { signal },
-  );
+  const body = { ...requestObject(drawn.source), shape: drawn.shape, box: drawn.answerBox, mode, width, height, aa: Number(ui.aa.value), timeout_ms: 60000 };
+  if (drawn.dimension !== 2) {
+    const camera = defaultCamera(drawn.answerBox, width / height);
+    body.eye = camera.eye;
+    body.target = camera.target;
+  }
+  const blob = await renderPng(body, { signal });
   if (ui.cpuImage.src) URL.revokeObjectURL(ui.cpuImage.src);
   ui.cpuImage.src = URL.createObjectURL(blob);
   ui.cpuImage.hidden = false;
 }
 
-/// POST /v1/sdf for `equation` in the current mode and box, then compiles it into the
-/// preview. `busy` is the current request (its label is updated). Throws ApiError,
-/// ShaderError or AbortError.
-async function drawSurface(equation, box, name, busy) {
+// The object of a request: {implicit} or {x, y, z?, domain?} (the wire's field names).
+function requestObject(source) {
+  if (source.implicit !== undefined) return { implicit: source.implicit };
+  const object = { x: source.x, y: source.y };
+  if (source.z) object.z = source.z;
+  if (source.domain) object.domain = source.domain;
+  return object;
+}
+
+/// POST /v1/sdf for `source` ({implicit} or {x, y, z, domain}) in the current mode,
+/// shape and box, then compiles it into the preview. A sheet in space also gets its
+/// equation F as a signed solid (the side function, preview.js says why). `equation`
+/// is F as the page shows it. `busy` is the current request (its label is updated).
+/// Throws ApiError, ShaderError or AbortError.
+async function drawSurface(source, equation, box, name, busy) {
   busy.setLabel('Building the distance function…');
   const mode = currentMode();
-  const answer = await sdf({ implicit: equation, mode, box, name, timeoutMs: Number(ui.timeout.value) }, { signal: busy.controller.signal });
+  const shape = ui.shape.value;
+  const signal = busy.controller.signal;
+  const timeoutMs = Number(ui.timeout.value);
+  const answer = await sdf({ ...source, shape, mode, box, name, timeoutMs }, { signal });
+  const dimension = answer.dimension === 2 ? 2 : 3;
+  const answerBox = Array.isArray(answer.box) ? answer.box : box;
+  let side = null;
+  if (answer.shape === 'sheet' && dimension === 3) {
+    busy.setLabel('Building the sheet\'s side function…');
+    // A scene of one implicit leaf rather than {implicit}: a scene is in space even
+    // when F has no z (a cylinder over a curve), where {implicit} would be a plane curve.
+    const implicit = answer.leaves?.[0]?.implicit || equation;
+    const scene = { type: 'implicit', equation: implicit, shape: 'solid' };
+    const signed = await sdf({ scene, mode: 'fast', box: answerBox, name: `${name}_side`, timeoutMs }, { signal });
+    side = { glsl: signed.glsl, functionName: signed.function };
+  }
   showGlsl(answer);
   hidePreviewError();
-  const drawn = { equation, box, name, mode };
+  ui.inputs.box.placeholder = `automatic (now ${answerBox.map((v) => Number(v.toPrecision(6))).join(', ')})`;
+  const drawn = { source, equation, box, name, mode, shape, answerBox, dimension };
   if (!preview) {
     busy.setLabel('Rendering on the server…');
-    await drawOnServer(drawn, mode, busy.controller.signal);
+    await drawOnServer(drawn, mode, signal);
     state.drawn = drawn;
     return answer;
   }
   // Cancel during the compilation keeps the previous surface on the canvas.
   busy.setLabel('Compiling the shader…');
-  const signal = busy.controller.signal;
   const onAbort = () => preview.cancelPending();
   signal.addEventListener('abort', onAbort, { once: true });
   try {
-    await preview.setSurface({ glsl: answer.glsl, functionName: answer.function, box: answer.box || box, uniforms: answer.uniforms || [] });
+    await preview.setSurface({
+      glsl: answer.glsl,
+      functionName: answer.function,
+      box: answerBox,
+      uniforms: answer.uniforms || [],
+      dimension,
+      shape: answer.shape || 'solid',
+      side,
+    });
   } finally {
     signal.removeEventListener('abort', onAbort);
   }
@@ -374,6 +456,8 @@ async function drawSurface(equation, box, name, busy) {
   state.drawn = drawn;
   ui.canvas.dataset.mode = mode;
   ui.canvas.dataset.equation = equation;
+  // The object as sent, so that the same view can be asked of POST /v1/render.
+  ui.canvas.dataset.request = JSON.stringify({ ...requestObject(source), shape });
   return answer;
 }
 
@@ -390,7 +474,7 @@ async function run(label, body) {
     const summary = await body(busy);
     endBusy(busy, 'done', summary);
     // The mode was switched while this ran, after its distance function was asked for.
-    if (state.drawn && state.drawn.mode !== currentMode()) redrawInMode();
+    if (state.drawn && (state.drawn.mode !== currentMode() || state.drawn.shape !== ui.shape.value)) redrawInMode();
   } catch (error) {
     if (error.name === 'AbortError') {
       if (state.busy === busy) endBusy(busy, 'idle', `Cancelled after ${((performance.now() - busy.started) / 1000).toFixed(1)} s.`);
@@ -412,7 +496,7 @@ async function run(label, body) {
   }
 }
 
-const PARAMETRIC_FIELDS = { x: 'x', y: 'y', z: 'z', box: 'box' };
+const PARAMETRIC_FIELDS = { x: 'x', y: 'y', z: 'z', domain: 'domain', box: 'box' };
 
 function submitParametric() {
   // Sent as typed (the parser skips spaces), so that error positions index the input.
@@ -421,9 +505,10 @@ function submitParametric() {
   const z = ui.inputs.z.value.trim() ? ui.inputs.z.value : '';
   const name = surfaceName();
   return run('Implicitizing…', async (busy) => {
-    let box;
+    let box, domain;
     try {
       box = parseBox(ui.inputs.box.value);
+      domain = parseDomain(ui.inputs.domain.value, z ? 2 : 1);
     } catch (e) {
       e.fieldMap = PARAMETRIC_FIELDS;
       throw e;
@@ -438,10 +523,11 @@ function submitParametric() {
     }
     showParametricResult(result, performance.now() - started);
     try {
-      await drawSurface(result.implicit, box, name, busy);
+      // The patch itself (its domain, its shape), not the whole algebraic surface.
+      await drawSurface({ x, y, z, domain }, result.implicit, box, name, busy);
     } catch (e) {
       // The equation is fine; its distance function or shader is not.
-      if (e instanceof ApiError) e.fieldMap = { box: 'box' };
+      if (e instanceof ApiError) e.fieldMap = PARAMETRIC_FIELDS;
       throw e;
     }
     return `Degree ${result.degree} by ${result.method === 'groebner' ? 'Gröbner' : result.method} in ${formatMs(result.elapsed_ms)}${result.verified ? ', verified' : ''}.`;
@@ -462,13 +548,13 @@ function submitImplicit() {
     const started = performance.now();
     let answer;
     try {
-      answer = await drawSurface(equation, box, name, busy);
+      answer = await drawSurface({ implicit: equation }, equation, box, name, busy);
     } catch (e) {
       if (e instanceof ApiError) e.fieldMap = { implicit: 'equation', box: 'box' };
       throw e;
     }
     showImplicitResult(equation, answer, performance.now() - started);
-    return `Distance function of degree ${answer.degree} (${answer.mode} mode).`;
+    return `Distance function of degree ${answer.degree} (${answer.mode} mode, ${answer.shape || 'solid'}).`;
   });
 }
 
@@ -476,15 +562,15 @@ function submitImplicit() {
 // is not interrupted: it asks for the new mode, or run() redraws when it is done.
 function redrawInMode() {
   if (!state.drawn || state.busy) return;
-  const { equation, box, name } = state.drawn;
+  const { source, equation, box, name } = state.drawn;
   run('Building the distance function…', async (busy) => {
     try {
-      await drawSurface(equation, box, name, busy);
+      await drawSurface(source, equation, box, name, busy);
     } catch (e) {
-      if (e instanceof ApiError) e.fieldMap = state.mode === 'implicit' ? { implicit: 'equation', box: 'box' } : { box: 'box' };
+      if (e instanceof ApiError) e.fieldMap = source.implicit !== undefined ? { implicit: 'equation', box: 'box' } : PARAMETRIC_FIELDS;
       throw e;
     }
-    return `Distance function in ${currentMode()} mode.`;
+    return `Distance function in ${currentMode()} mode (shape ${ui.shape.value}).`;
   });
 }
 
@@ -503,6 +589,9 @@ function setMode(mode, { focus = false } = {}) {
   if (mode === 'implicit' && !ui.inputs.equation.value && ui.implicit.dataset.equation) {
     ui.inputs.equation.value = ui.implicit.dataset.equation;
   }
+  // An example's box frames its implicit equation; its patch gets a fitted box.
+  const example = state.examples.find((e) => e.name === ui.examples.value);
+  if (example && state.boxFromExample) ui.inputs.box.value = exampleBox(example, mode);
   if (focus) ui.tabs[mode].focus();
   document.body.dataset.mode = mode;
 }
@@ -517,15 +606,23 @@ for (const [name, tab] of Object.entries(ui.tabs)) {
   });
 }
 
+// The box input for `example` in tab `mode`: its box for the implicit equation (the
+// algebraic surface needs one), empty for the parametric patch (fitted by the server).
+function exampleBox(example, mode) {
+  return mode === 'implicit' && example.box ? example.box.join(', ') : '';
+}
+
 function applyExample(name, { submit = true } = {}) {
   const example = state.examples.find((e) => e.name === name);
   if (!example) return;
   ui.examples.value = name;
   ui.inputs.x.value = example.x;
   ui.inputs.y.value = example.y;
-  ui.inputs.z.value = example.z;
+  ui.inputs.z.value = example.z || '';
+  ui.inputs.domain.value = (example.domain || []).join(', ');
   if (example.implicit) ui.inputs.equation.value = example.implicit;
-  ui.inputs.box.value = (example.box || DEFAULT_BOX).join(', ');
+  ui.inputs.box.value = exampleBox(example, state.mode);
+  state.boxFromExample = true;
   if (!submit) return;
   if (state.mode === 'implicit' && example.implicit) submitImplicit();
   else submitParametric();
@@ -533,7 +630,7 @@ function applyExample(name, { submit = true } = {}) {
 
 ui.examples.addEventListener('change', () => applyExample(ui.examples.value));
 // Editing an expression makes it a surface of one's own: the menu says so.
-for (const name of ['x', 'y', 'z', 'equation']) {
+for (const name of ['x', 'y', 'z', 'domain', 'equation']) {
   ui.inputs[name].addEventListener('input', () => {
     ui.examples.value = '';
     if (ui.inputs[name].getAttribute('aria-invalid')) {
@@ -543,6 +640,7 @@ for (const name of ['x', 'y', 'z', 'equation']) {
   });
 }
 ui.inputs.box.addEventListener('input', () => {
+  state.boxFromExample = false;
   ui.inputs.box.removeAttribute('aria-invalid');
   $('box-error').hidden = true;
 });
@@ -564,6 +662,7 @@ ui.forms.implicit.addEventListener('submit', (e) => {
 });
 
 for (const radio of document.querySelectorAll('input[name="mode"]')) radio.addEventListener('change', redrawInMode);
+ui.shape.addEventListener('change', redrawInMode);
 ui.aa.addEventListener('change', () => {
   if (preview) preview.setAntialiasing(Number(ui.aa.value));
   else if (state.drawn) run('Rendering on the server…', async (busy) => (await drawOnServer(state.drawn, currentMode(), busy.controller.signal), 'Rendered on the server.'));
@@ -636,13 +735,15 @@ function updateServerStatus(ok) {
   ui.serverStatus.querySelector('.text').textContent = ok ? `server ok · ${apiHost}` : `server unreachable · ${apiHost}`;
 }
 
-// Settings from the address: ?example=NAME&mode=fast|safe&aa=N&input=implicit.
+// Settings from the address: ?example=NAME&mode=fast|safe&shape=auto|sheet|solid&aa=N&input=implicit.
 function readAddress() {
   const params = new URLSearchParams(window.location.search);
   const aa = params.get('aa');
   if (aa && [...ui.aa.options].some((o) => o.value === aa)) ui.aa.value = aa;
   const mode = params.get('mode');
   if (mode === 'fast' || mode === 'safe') $(`mode-${mode}`).checked = true;
+  const shape = params.get('shape');
+  if ([...ui.shape.options].some((o) => o.value === shape)) ui.shape.value = shape;
   if (preview) preview.setAntialiasing(Number(ui.aa.value));
   return { example: params.get('example') || INITIAL_EXAMPLE, input: params.get('input') === 'implicit' ? 'implicit' : 'parametric' };
 }

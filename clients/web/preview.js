@@ -18,8 +18,31 @@
 //   0.95; AA×AA samples at ((m + ½)/AA, (n + ½)/AA) averaged after the gamma.
 //
 // The one difference: the CPU renderer takes the normal of a single polynomial from
-// its exact gradient (in double); the shader only has the distance function, so it
-// uses the tetrahedron normal that the CPU renderer uses for scenes.
+// its exact gradient (in double); the shader only has distance functions, so it uses
+// the tetrahedron technique, which the CPU renderer uses for scenes.
+//
+// Sheets (the answer's "shape" is "sheet": an open surface, a patch) are drawn
+// two-sided as the CPU renderer draws them (docs/render.md §5): warm where the side
+// F > 0 faces the viewer, blue where F < 0 does. A sheet's own function is |d| ≥ 0 on
+// both sides, so neither its sign nor its gradient (which always points away from the
+// surface, towards whoever looks) can tell the sides apart. The page therefore asks
+// POST /v1/sdf for a second function of the same equation F, in the same box, as a
+// solid (shape "solid", mode fast: F/|∇F|, signed, smooth across the surface), and the
+// shader takes from it what the CPU renderer takes from ∇G: the normal (tetrahedron
+// technique on the signed function, since the |d| of a sheet has a kink on the
+// surface, where the four samples straddle it) and the side (∇F·ray > 0: the viewer is
+// where F < 0, the back). The same signed function lets the march notice a step that
+// jumps across the sheet (its sign changes between two points; the crossing is
+// bisected and is a hit where the sheet's value is below ε), as SheetCrossing does in
+// march_ray.cpp. Choosing the gradient over the sign at a point off the surface
+// avoids asking how far off: at the hit |F| is at the level of rounding, while ∇F is
+// well defined wherever the surface is smooth.
+//
+// Plane curves (the answer's "dimension" is 2, `float NAME_sdf(vec2 p)`) are drawn
+// flat by another fragment shader that mirrors render_curve.cpp: the box fills the
+// canvas with its aspect kept, a faint grid and the axes, the curve a 1.5 px line
+// antialiased from |value| in pixels, a solid curve's inside tinted. Drag pans, the
+// wheel zooms about the pointer.
 //
 // The image is drawn progressively, in horizontal strips sized so that each takes
 // about STRIP_BUDGET_MS on the GPU (measured with fences), so that a software GL or a
@@ -38,14 +61,36 @@ const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a
 const norm = (a) => Math.sqrt(dot(a, a));
 const unit = (a) => scale(a, 1 / norm(a));
 
-/// The renderer's default camera for a box [x0, y0, z0, x1, y1, z1] (docs/api.md,
-/// POST /v1/render): target the centre, eye centre + (3, 3, 5)·u with u half the
-/// largest half side. Returns {target, eye, unit}.
-export function defaultCamera(box) {
+/// The renderer's default camera for a box [x0, y0, z0, x1, y1, z1] (render_image.cpp
+/// default_camera): target the centre, eye along (3, 3, 5) at the distance R/sin(α) at
+/// which the box's bounding sphere (R: half its diagonal) fits the narrower half-angle α
+/// of the view (atan(1/2) vertically, atan(aspect/2) across an image narrower than
+/// tall). `unit` is half the largest half side (the length unit of the defaults).
+/// Returns {target, eye, unit}.
+export function defaultCamera(box, aspect = 1) {
   const centre = [(box[0] + box[3]) / 2, (box[1] + box[4]) / 2, (box[2] + box[5]) / 2];
   const half = Math.max(box[3] - box[0], box[4] - box[1], box[5] - box[2]) / 2;
-  const u = half / 2;
-  return { target: centre, eye: [centre[0] + 3 * u, centre[1] + 3 * u, centre[2] + 5 * u], unit: u };
+  const radius = 0.5 * Math.hypot(box[3] - box[0], box[4] - box[1], box[5] - box[2]);
+  const extent = Number.isFinite(aspect) && aspect > 0 ? Math.min(1, aspect) / 2 : 0.5;
+  const distance = radius / (extent / Math.hypot(extent, 1));
+  const direction = unit([3, 3, 5]);
+  return { target: centre, eye: add(centre, scale(direction, distance)), unit: half / 2 };
+}
+
+/// The 2-D view of a curve's box [x0, y0, x1, y1] in a width × height image
+/// (render_curve.cpp curve_view): the box's centre, pixels per unit, the grid step.
+export function defaultPlaneView(box, width, height) {
+  const [x0, y0, x1, y1] = box;
+  const extent = Math.max(x1 - x0, y1 - y0);
+  return { centre: [(x0 + x1) / 2, (y0 + y1) / 2], scale: Math.min(width / (x1 - x0), height / (y1 - y0)), extent };
+}
+
+/// The grid step of render_curve.cpp: the smallest 1, 2 or 5 × 10^k ≥ extent/10.
+export function gridStep(extent) {
+  const target = extent / 10;
+  const base = Math.pow(10, Math.floor(Math.log10(target)));
+  for (const m of [1, 2, 5, 10]) if (m * base >= target * (1 - 1e-12)) return m * base;
+  return 10 * base;
 }
 
 /// The camera frame of docs/render.md §2 (camera.cpp): forward towards the target,
@@ -82,7 +127,24 @@ void main() {
 }
 `;
 
-function fragmentShader(glsl, functionName) {
+// The tetrahedron technique on `fn` (docs/render.md §5): N = Σ k_i f(p + h k_i) = 4h∇f + O(h²).
+function tetrahedronNormal(name, fn) {
+  return `vec3 ${name}(vec3 p) {
+  float h = 1e-3 * pv_unit;
+  const vec3 k0 = vec3(1.0, -1.0, -1.0);
+  const vec3 k1 = vec3(-1.0, -1.0, 1.0);
+  const vec3 k2 = vec3(-1.0, 1.0, -1.0);
+  const vec3 k3 = vec3(1.0, 1.0, 1.0);
+  vec3 n = k0 * ${fn}(p + h * k0) + k1 * ${fn}(p + h * k1) + k2 * ${fn}(p + h * k2) + k3 * ${fn}(p + h * k3);
+  float len = length(n);
+  return len > 0.0 ? n / len : vec3(0.0);
+}`;
+}
+
+// The 3-D tracer around the service's GLSL. `surface.side`, when present, is the
+// signed companion of a sheet ({glsl, functionName}: the same F as a fast solid).
+function fragmentShader(surface) {
+  const side = surface.side || null;
   return `#version 300 es
 precision highp float;
 precision highp int;
@@ -97,22 +159,17 @@ uniform float pv_tmax;
 out vec4 pv_colour;
 
 // ---- the GLSL returned by POST /v1/sdf, unchanged ----
-${glsl}
+${surface.glsl}
 // ---- end of the service's GLSL ----
-
-float pv_map(vec3 p) { return ${functionName}(p); }
-
-// Tetrahedron normal (docs/render.md §5): N = sum k_i f(p + h k_i) = 4h grad f + O(h^2).
-vec3 pv_normal(vec3 p) {
-  float h = 1e-3 * pv_unit;
-  const vec3 k0 = vec3(1.0, -1.0, -1.0);
-  const vec3 k1 = vec3(-1.0, -1.0, 1.0);
-  const vec3 k2 = vec3(-1.0, 1.0, -1.0);
-  const vec3 k3 = vec3(1.0, 1.0, 1.0);
-  vec3 n = k0 * pv_map(p + h * k0) + k1 * pv_map(p + h * k1) + k2 * pv_map(p + h * k2) + k3 * pv_map(p + h * k3);
-  float len = length(n);
-  return len > 0.0 ? n / len : vec3(0.0);
-}
+${side ? `
+// ---- the sheet's equation as a fast solid (POST /v1/sdf, shape "solid"): its sign is F's ----
+${side.glsl}
+// ---- end ----
+` : ''}
+float pv_map(vec3 p) { return ${surface.functionName}(p); }
+${tetrahedronNormal('pv_normal', 'pv_map')}
+${side ? `float pv_signed(vec3 p) { return ${side.functionName}(p); }
+${tetrahedronNormal('pv_signed_normal', 'pv_signed')}` : ''}
 
 // The improved soft shadow (shading.cpp soft_shadow): k = 1.5, from 0.02u to 2.5u.
 float pv_shadow(vec3 p, vec3 l) {
@@ -141,12 +198,15 @@ float pv_occlusion(vec3 p, vec3 n) {
   return clamp(1.0 - occluded, 0.0, 1.0);
 }
 
-// Blinn-Phong with Schlick's Fresnel, one sun, gamma 2.2 (shading.cpp shade_hit).
+// Blinn-Phong with Schlick's Fresnel, one sun, gamma 2.2 (shading.cpp shade_hit); a
+// sheet's back (the side where F < 0 faces the viewer) in blue (ShadingParams::back_albedo).
 vec3 pv_shade(vec3 p, vec3 rd) {
-  vec3 n = pv_normal(p);
+  vec3 albedo = vec3(0.80, 0.52, 0.30);
+${side ? `  vec3 n = pv_signed_normal(p);
+  if (dot(n, rd) > 0.0) albedo = vec3(0.25, 0.42, 0.80);
+  if (n == vec3(0.0)) n = pv_normal(p);` : `  vec3 n = pv_normal(p);`}
   if (dot(n, rd) > 0.0) n = -n;
   vec3 view = -rd;
-  const vec3 albedo = vec3(0.80, 0.52, 0.30);
   vec3 colour = vec3(0.20, 0.22, 0.26) * albedo * pv_occlusion(p, n);
   vec3 l = normalize(vec3(-0.5, 0.8, 0.35));
   float diffuse = max(0.0, dot(n, l));
@@ -159,7 +219,22 @@ vec3 pv_shade(vec3 p, vec3 rd) {
   }
   return pow(clamp(colour, 0.0, 1.0), vec3(1.0 / 2.2));
 }
-
+${side ? `
+// A step across the sheet (march_ray.cpp SheetCrossing): the signed function's sign
+// changed between a and b; bisect on it and return the crossing when the sheet's
+// value there is below eps, else -1.
+float pv_crossing(vec3 ro, vec3 rd, float a, float b, float sa, float eps) {
+  for (int i = 0; i < 40; ++i) {
+    if (b - a <= 1e-3 * eps) break;
+    float m = 0.5 * (a + b);
+    float sm = sign(pv_signed(ro + m * rd));
+    if (sm == 0.0) { a = m; b = m; break; }
+    if (sm == sa) a = m; else b = m;
+  }
+  float c = 0.5 * (a + b);
+  return pv_map(ro + c * rd) < eps ? c : -1.0;
+}
+` : ''}
 void main() {
   vec2 corner = floor(gl_FragCoord.xy);  // the pixel's lower-left corner
   float eps = 1e-4 * pv_unit;
@@ -172,9 +247,16 @@ void main() {
       // Sphere tracing (march_ray.cpp march_sphere): signed hit rule, 255 steps.
       float t = 0.0;
       bool hit = false;
+${side ? `      float lastT = 0.0, lastSign = 0.0;` : ''}
       for (int i = 0; i < 255; ++i) {
         float f = pv_map(pv_eye + t * rd);
         if (f < eps) { hit = true; break; }
+${side ? `        float s = sign(pv_signed(pv_eye + t * rd));
+        if (s != 0.0 && lastSign != 0.0 && s != lastSign) {
+          float c = pv_crossing(pv_eye, rd, lastT, t, lastSign, eps);
+          if (c >= 0.0) { t = c; hit = true; break; }
+        }
+        if (s != 0.0) { lastSign = s; lastT = t; }` : ''}
         t += f;
         if (t > pv_tmax) break;
       }
@@ -186,13 +268,56 @@ void main() {
 `;
 }
 
+// The flat picture of a plane curve (render_curve.cpp): one value per pixel at its
+// centre, coverage clamp(w/2 + 1/2 − distance in pixels, 0, 1) for the line (w = 1.5),
+// the grid (w = 1) and the inside's edge; colours of CurveStyle.
+function planeShader(surface) {
+  const solid = surface.shape === 'solid';
+  return `#version 300 es
+precision highp float;
+precision highp int;
+uniform vec2 pv_centre;   // the point at the canvas's centre
+uniform float pv_scale;   // pixels per unit
+uniform float pv_step;    // the grid's step
+uniform vec4 pv_box;      // x0, y0, x1, y1
+uniform vec2 pv_resolution;
+out vec4 pv_colour;
+
+// ---- the GLSL returned by POST /v1/sdf, unchanged ----
+${surface.glsl}
+// ---- end of the service's GLSL ----
+
+float pv_line(float distance, float width) { return clamp(width / 2.0 + 0.5 - distance, 0.0, 1.0); }
+float pv_grid(float v) { float k = v / pv_step; return abs(k - floor(k + 0.5)) * pv_step * pv_scale; }
+
+void main() {
+  // gl_FragCoord's rows count from the bottom: y grows upwards, as on the CPU's image.
+  vec2 p = pv_centre + (gl_FragCoord.xy - 0.5 * pv_resolution) / pv_scale;
+  bool inBox = p.x >= pv_box.x && p.x <= pv_box.z && p.y >= pv_box.y && p.y <= pv_box.w;
+  vec3 colour = inBox ? vec3(0.98, 0.98, 0.97) : vec3(0.90, 0.90, 0.89);
+  float value = ${surface.functionName}(p);
+  bool finite = !(isnan(value) || isinf(value));
+${solid ? `  if (finite) colour = mix(colour, vec3(0.99, 0.87, 0.72), clamp(0.5 - value * pv_scale, 0.0, 1.0));` : ''}
+  if (inBox) {
+    colour = mix(colour, vec3(0.86, 0.87, 0.89), max(pv_line(pv_grid(p.x), 1.0), pv_line(pv_grid(p.y), 1.0)));
+    colour = mix(colour, vec3(0.62, 0.64, 0.68), max(pv_line(abs(p.x) * pv_scale, 1.0), pv_line(abs(p.y) * pv_scale, 1.0)));
+  }
+  if (finite) colour = mix(colour, vec3(0.09, 0.20, 0.55), pv_line(abs(value) * pv_scale, 1.5));
+  pv_colour = vec4(colour, 1.0);
+}
+`;
+}
+
 /// The preview on one canvas. Create it with Preview.create(canvas) (null when WebGL2
 /// is unavailable), give it a surface with setSurface(), and it redraws by itself
 /// when the camera, the size or the settings change. The canvas's data- attributes
 /// say what is on it (data-state: idle, compiling, rendering, done, error;
-/// data-frame counts finished images; data-eye, data-target, data-width,
-/// data-height, data-aa, data-function, data-box describe the last one), so that
-/// anyone (the browser test, a user's script) can redo the same view elsewhere.
+/// data-frame counts finished images; data-eye, data-target (a curve: data-view, its
+/// centre and pixels per unit), data-width, data-height, data-aa, data-function,
+/// data-box, data-dimension, data-shape and data-sides ("two": a sheet drawn
+/// two-sided) describe the last one), so that anyone (the browser test, a user's
+/// script) can redo the same view elsewhere. Each finished image also dispatches a
+/// `previewframe` event on the canvas (detail: {frame}).
 export class Preview {
   static create(canvas, options = {}) {
     const gl = canvas.getContext('webgl2', {
@@ -219,7 +344,8 @@ export class Preview {
     this.locations = null;
     this.generation = 0;
     this.aa = 2;
-    this.camera = null; // {target, eye, unit, centre}
+    this.camera = null; // {target, eye, unit, centre}: the 3-D view
+    this.plane = null; // {centre: [x, y], scale, defaultScale, extent}: the 2-D view of a curve
     this.frame = 0;
     this.work = null; // the image being drawn: {kind: 'low' | 'wait' | 'full' | 'finishing', nextRow}
     this.fence = null;
@@ -250,8 +376,9 @@ export class Preview {
   }
 
   /// Compiles the service's GLSL into the tracer and draws it. `surface`:
-  /// {glsl, functionName, box: [x0, y0, z0, x1, y1, z1], uniforms: [{name, type,
-  /// default}]}. Resolves when the program is linked (the image then draws
+  /// {glsl, functionName, box: [x0, y0, z0, x1, y1, z1] (a curve: [x0, y0, x1, y1]),
+  /// uniforms: [{name, type, default}], dimension: 3 or 2, shape: "solid" or "sheet",
+  /// side: {glsl, functionName} (a sheet's equation as a signed solid) or null}. Resolves when the program is linked (the image then draws
   /// progressively); rejects with ShaderError when the driver refuses it, or with
   /// an Error named "AbortError" when a newer surface replaced this one first.
   async setSurface(surface, { keepCamera = false } = {}) {
@@ -261,7 +388,7 @@ export class Preview {
     this.#setState('compiling');
     const program = gl.createProgram();
     const vs = this.#shader(gl.VERTEX_SHADER, VERTEX_SHADER);
-    const fs = this.#shader(gl.FRAGMENT_SHADER, fragmentShader(surface.glsl, surface.functionName));
+    const fs = this.#shader(gl.FRAGMENT_SHADER, surface.dimension === 2 ? planeShader(surface) : fragmentShader(surface));
     gl.attachShader(program, vs);
     gl.attachShader(program, fs);
     gl.linkProgram(program);
@@ -289,7 +416,10 @@ export class Preview {
     gl.deleteShader(fs);
     if (this.program) gl.deleteProgram(this.program);
     this.program = program;
-    const names = ['pv_eye', 'pv_right', 'pv_up', 'pv_forward', 'pv_resolution', 'pv_aa', 'pv_unit', 'pv_tmax'];
+    const names =
+      surface.dimension === 2
+        ? ['pv_centre', 'pv_scale', 'pv_step', 'pv_box', 'pv_resolution']
+        : ['pv_eye', 'pv_right', 'pv_up', 'pv_forward', 'pv_resolution', 'pv_aa', 'pv_unit', 'pv_tmax'];
     this.locations = Object.fromEntries(names.map((n) => [n, gl.getUniformLocation(program, n)]));
     gl.useProgram(program);
     // The scene's own uniforms at their defaults (docs/sdf.md, "Uniforms").
@@ -299,9 +429,12 @@ export class Preview {
       if (u.type === 'vec3' && Array.isArray(u.default)) gl.uniform3fv(location, u.default);
       else if (typeof u.default === 'number') gl.uniform1f(location, u.default);
     }
-    const sameBox = this.surface && JSON.stringify(this.surface.box) === JSON.stringify(surface.box);
+    const sameBox =
+      this.surface &&
+      this.surface.dimension === surface.dimension &&
+      JSON.stringify(this.surface.box) === JSON.stringify(surface.box);
     this.surface = surface;
-    if (!(keepCamera || sameBox) || !this.camera) this.resetView({ redraw: false });
+    if (!(keepCamera || sameBox) || !(surface.dimension === 2 ? this.plane : this.camera)) this.resetView({ redraw: false });
     this.#startImage(true);
   }
 
@@ -318,17 +451,30 @@ export class Preview {
     if (this.program) this.#startImage(false);
   }
 
-  /// Back to the default camera of the surface's box.
+  /// Back to the default camera of the surface's box (a curve: the box filling the canvas).
   resetView({ redraw = true } = {}) {
     if (!this.surface) return;
-    const c = defaultCamera(this.surface.box);
-    this.camera = { target: c.target, eye: c.eye, unit: c.unit, centre: c.target, defaultDistance: norm(sub(c.eye, c.target)) };
+    const { width, height } = this.canvas;
+    if (this.surface.dimension === 2) {
+      const v = defaultPlaneView(this.surface.box, width, height);
+      this.plane = { centre: v.centre, scale: v.scale, defaultScale: v.scale, extent: v.extent };
+    } else {
+      const c = defaultCamera(this.surface.box, width / height);
+      this.camera = { target: c.target, eye: c.eye, unit: c.unit, centre: c.target, defaultDistance: norm(sub(c.eye, c.target)) };
+    }
     if (redraw && this.program) this.#startImage(true);
   }
 
   /// Turns the eye around the target by `dAzimuth` (about the up axis) and
-  /// `dElevation` radians, and moves it `zoom` times as far (1: unchanged).
+  /// `dElevation` radians, and moves it `zoom` times as far (1: unchanged). On a
+  /// curve: zooms by 1/`zoom` about the canvas's centre.
   orbit(dAzimuth, dElevation, zoom = 1) {
+    if (this.surface && this.surface.dimension === 2) {
+      // The arrow keys' turns pan by a twentieth of the canvas per 5°.
+      const step = (this.canvas.width / 20) * ((180 / Math.PI) / 5);
+      if (dAzimuth || dElevation) return this.panPlane(dAzimuth * step, -dElevation * step);
+      return this.zoomPlane(zoom);
+    }
     if (!this.camera) return;
     const offset = sub(this.camera.eye, this.camera.target);
     let r = norm(offset);
@@ -340,6 +486,23 @@ export class Preview {
     r = Math.max(0.1 * d, Math.min(20 * d, r * zoom));
     const ce = Math.cos(elevation);
     this.camera.eye = add(this.camera.target, [r * ce * Math.sin(azimuth), r * Math.sin(elevation), r * ce * Math.cos(azimuth)]);
+    this.#startImage(true);
+  }
+
+  /// A curve's view: moves by (dx, dy) canvas pixels (the picture follows the pointer).
+  panPlane(dx, dy) {
+    if (!this.plane) return;
+    const c = this.plane.centre;
+    this.plane.centre = [c[0] - dx / this.plane.scale, c[1] + dy / this.plane.scale];
+    this.#startImage(true);
+  }
+
+  /// A curve's view: `zoom` times as far (1/zoom as many pixels per unit, within
+  /// 1/20 to 1000 times the default) about the canvas's centre.
+  zoomPlane(zoom) {
+    if (!this.plane) return;
+    const d = this.plane.defaultScale;
+    this.plane.scale = Math.max(d / 20, Math.min(1000 * d, this.plane.scale / zoom));
     this.#startImage(true);
   }
 
@@ -434,6 +597,7 @@ export class Preview {
       this.canvas.dataset.frame = String(this.frame);
       const ms = performance.now() - work.fullStarted;
       this.#setState('done', { ms, width, height, aa: this.aa, renderer: this.rendererName });
+      this.canvas.dispatchEvent(new CustomEvent('previewframe', { detail: { frame: this.frame } }));
     };
     requestAnimationFrame(finish);
   }
@@ -465,8 +629,6 @@ export class Preview {
 
   #draw(framebuffer, width, height, aa, scissor) {
     const gl = this.gl;
-    const cam = this.camera;
-    const frame = cameraFrame(cam.eye, cam.target);
     const L = this.locations;
     gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
     gl.viewport(0, 0, width, height);
@@ -477,14 +639,27 @@ export class Preview {
       gl.disable(gl.SCISSOR_TEST);
     }
     gl.useProgram(this.program);
-    gl.uniform3fv(L.pv_eye, cam.eye);
-    gl.uniform3fv(L.pv_right, frame.right);
-    gl.uniform3fv(L.pv_up, frame.up);
-    gl.uniform3fv(L.pv_forward, frame.forward);
-    gl.uniform2f(L.pv_resolution, width, height);
-    gl.uniform1i(L.pv_aa, aa);
-    gl.uniform1f(L.pv_unit, cam.unit);
-    gl.uniform1f(L.pv_tmax, 100 * cam.unit + norm(sub(cam.eye, cam.centre)));
+    if (this.surface.dimension === 2) {
+      // A smaller framebuffer (the quick pass) sees the same view at fewer pixels per unit.
+      const v = this.plane;
+      const s = v.scale * (height / this.canvas.height);
+      gl.uniform2f(L.pv_centre, v.centre[0], v.centre[1]);
+      gl.uniform1f(L.pv_scale, s);
+      gl.uniform1f(L.pv_step, gridStep(v.extent * (v.defaultScale / v.scale)));
+      gl.uniform4f(L.pv_box, ...this.surface.box);
+      gl.uniform2f(L.pv_resolution, width, height);
+    } else {
+      const cam = this.camera;
+      const frame = cameraFrame(cam.eye, cam.target);
+      gl.uniform3fv(L.pv_eye, cam.eye);
+      gl.uniform3fv(L.pv_right, frame.right);
+      gl.uniform3fv(L.pv_up, frame.up);
+      gl.uniform3fv(L.pv_forward, frame.forward);
+      gl.uniform2f(L.pv_resolution, width, height);
+      gl.uniform1i(L.pv_aa, aa);
+      gl.uniform1f(L.pv_unit, cam.unit);
+      gl.uniform1f(L.pv_tmax, 100 * cam.unit + norm(sub(cam.eye, cam.centre)));
+    }
     gl.bindVertexArray(this.vao);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
     gl.bindVertexArray(null);
@@ -519,8 +694,18 @@ export class Preview {
 
   #publishView(width, height) {
     const d = this.canvas.dataset;
-    d.eye = JSON.stringify(this.camera.eye);
-    d.target = JSON.stringify(this.camera.target);
+    d.dimension = String(this.surface.dimension);
+    d.shape = this.surface.shape || '';
+    d.sides = this.surface.side ? 'two' : 'one';
+    if (this.surface.dimension === 2) {
+      d.view = JSON.stringify({ centre: this.plane.centre, scale: this.plane.scale });
+      delete d.eye;
+      delete d.target;
+    } else {
+      d.eye = JSON.stringify(this.camera.eye);
+      d.target = JSON.stringify(this.camera.target);
+      delete d.view;
+    }
     d.width = String(width);
     d.height = String(height);
     d.aa = String(this.aa);
@@ -554,7 +739,11 @@ export class Preview {
       p.x = e.clientX;
       p.y = e.clientY;
       if (pointers.size === 1) {
-        if (dx || dy) this.orbit(-dx * 0.008, dy * 0.008);
+        if (!(dx || dy)) return;
+        // Pointer moves are in CSS pixels; the plane's scale is in canvas pixels.
+        const ratio = this.canvas.width / Math.max(1, this.canvas.getBoundingClientRect().width);
+        if (this.surface && this.surface.dimension === 2) this.panPlane(dx * ratio, dy * ratio);
+        else this.orbit(-dx * 0.008, dy * 0.008);
       } else if (pointers.size === 2) {
         const s = spread();
         if (pinch > 0 && s > 0) this.orbit(0, 0, pinch / s);

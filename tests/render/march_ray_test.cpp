@@ -2,7 +2,8 @@
 // on the sphere, the torus and Steiner's surface (hit masks and depths, pixel by
 // pixel); the documented behaviour of single rays (out of steps is a counted miss,
 // starting inside, grazing, far away, through a singular point); the overlap
-// fallback of enhanced sphere tracing; the refusals.
+// fallback of enhanced sphere tracing; a sheet's crossings are hits in fast mode; the
+// refusals.
 
 #include "implicitizer/render/march_ray.hpp"
 
@@ -66,7 +67,7 @@ TEST(MarchRay, EveryMethodAgreesWithExactOnSphereTorusSteiner) {
   for (const test::NamedSurface& surface : test::agreement_surfaces()) {
     for (SdfMode mode : {SdfMode::fast, SdfMode::safe}) {
       const RenderTarget target = implicit_target(surface.equation, surface.box, mode);
-      const CameraSpec camera = default_camera(target);
+      const CameraSpec camera = seed_camera(target);
       const MarchParams params = default_render_march_params(target, camera);
       const auto exact = test::march_pixels(target, camera, kSize, kSize, MarchMethod::exact, params);
       const auto exact_hits = std::count_if(exact.begin(), exact.end(), [](const MarchResult& r) { return r.hit; });
@@ -97,7 +98,7 @@ TEST(MarchRay, UncheckedNewtonFindsFartherRoots) {
   constexpr std::size_t kSize = 96;
   for (const test::NamedSurface& surface : test::agreement_surfaces()) {
     const RenderTarget target = implicit_target(surface.equation, surface.box, SdfMode::fast);
-    const CameraSpec camera = default_camera(target);
+    const CameraSpec camera = seed_camera(target);
     const MarchParams checked = default_render_march_params(target, camera);
     MarchParams unchecked = checked;
     unchecked.check_newton_steps = false;
@@ -120,11 +121,56 @@ TEST(MarchRay, UncheckedNewtonFindsFartherRoots) {
   }
 }
 
+// A sheet (the saddle z = s^2 - t^2 over [-1, 1]^2, a trimmed patch) in fast mode: its
+// value is >= 0 on both sides and F/|∇F| is not a bound, so steps jump across it;
+// without the sign test of G (SheetCrossing) a third of the saddle's middle was holes.
+// Every value-based method now agrees with exact (which skips roots off the patch).
+TEST(MarchRay, FastMarchesDoNotStepThroughASheet) {
+  SceneNode node;
+  node.kind = NodeKind::parametric;
+  node.leaf.coordinates = {"s", "t", "s^2-t^2"};
+  node.leaf.domain = {{Rational(-1), Rational(1)}, {Rational(-1), Rational(1)}};
+  const RenderTarget saddle = RenderTarget::compile(node, SceneParams{});
+  ASSERT_EQ(saddle.shape(), SdfShape::sheet);
+  constexpr std::size_t kSize = 64;
+  const CameraSpec camera = default_camera(saddle);
+  const MarchParams params = default_render_march_params(saddle, camera);
+  const auto exact = test::march_pixels(saddle, camera, kSize, kSize, MarchMethod::exact, params);
+  std::size_t exact_hits = 0;
+  for (const MarchResult& r : exact) exact_hits += r.hit;
+  EXPECT_GT(exact_hits, kSize * kSize / 8);
+  for (MarchMethod method : {MarchMethod::sphere, MarchMethod::enhanced, MarchMethod::newton}) {
+    const Agreement g =
+        compare(test::march_pixels(saddle, camera, kSize, kSize, method, params), exact, saddle.length_unit());
+    EXPECT_GE(g.iou, 0.99) << to_string(method);
+    EXPECT_GE(g.within, 0.99) << to_string(method);
+  }
+}
+
+// Shape auto orients a solid so that its inside is the enclosed region: 1 − x² − y² − z²
+// is negative on the box's faces, so the leaf's value is that of −F. The exact method
+// tests the sign of G where the ray enters the box: G must be −F's, else the whole
+// box would read as inside and every ray would hit where it enters (t = 3 here).
+TEST(MarchRay, ExactFollowsANegatedSolid) {
+  SceneNode node = test::implicit_node("1-x^2-y^2-z^2");
+  node.leaf.shape = SdfShape::automatic;
+  const RenderTarget ball = RenderTarget::compile(node, SceneParams{});
+  ASSERT_EQ(ball.shape(), SdfShape::solid);
+  const Ray down{{0, 0, 5}, {0, 0, -1}};
+  const MarchParams params = default_march_params(ball);
+  const MarchResult exact = march_ray(ball, down, MarchMethod::exact, params);
+  ASSERT_TRUE(exact.hit);
+  EXPECT_NEAR(exact.t, 4, 1e-9);
+  const MarchResult sphere = march_ray(ball, down, MarchMethod::sphere, params);
+  ASSERT_TRUE(sphere.hit);
+  EXPECT_NEAR(sphere.t, 4, 1e-3);
+}
+
 // Enhanced sphere tracing costs no more than sphere tracing on these surfaces.
 TEST(MarchRay, EnhancedSpendsNoMoreEvaluationsThanSphere) {
   for (const test::NamedSurface& surface : test::agreement_surfaces()) {
     const RenderTarget target = implicit_target(surface.equation, surface.box);
-    const CameraSpec camera = default_camera(target);
+    const CameraSpec camera = seed_camera(target);
     const MarchParams params = default_render_march_params(target, camera);
     auto total = [&](MarchMethod method) {
       std::uint64_t sum = 0;

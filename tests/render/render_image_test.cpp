@@ -1,16 +1,19 @@
 // Tests of lib/src/render/render_image.cpp: the image and statistics do not depend
 // on the number of threads; rays that run out of steps are counted misses drawn as
 // background; the budget stops a render and says why; refusals; the PNG of a
-// render decodes to the same pixels.
+// render decodes to the same pixels; the default camera frames the object's box;
+// a plane curve is drawn flat (render_curve).
 
 #include "implicitizer/render/render_image.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/render/png_codec.hpp"
+#include "implicitizer/render/render_curve.hpp"
 #include "render/render_support.hpp"
 
 namespace implicitizer {
@@ -119,6 +122,74 @@ TEST(RenderImage, ThePngOfARenderDecodesToItsPixels) {
   EXPECT_TRUE(back == r.image);
   EXPECT_EQ(back.pixel(0, 0), (std::array<std::uint8_t, 3>{242, 242, 242}));   // the seed's grey 0.95
   EXPECT_NE(back.pixel(16, 8), (std::array<std::uint8_t, 3>{242, 242, 242}));  // the sphere in the middle
+}
+
+TEST(DefaultCamera, FramesTheBoxsBoundingSphereFromTheSeedsDirection) {
+  // The default box: R = 2·sqrt(3), seen from R / sin(atan(1/2)) = R·sqrt(5) along (3, 3, 5).
+  const RenderTarget sphere = test::implicit_target("x^2+y^2+z^2-1");
+  const CameraSpec spec = default_camera(sphere);
+  const double distance = std::sqrt(spec.eye[0] * spec.eye[0] + spec.eye[1] * spec.eye[1] + spec.eye[2] * spec.eye[2]);
+  EXPECT_NEAR(distance, 2 * std::sqrt(3.0) * std::sqrt(5.0), 1e-12);
+  EXPECT_NEAR(spec.eye[0] / distance, 3 / std::sqrt(43.0), 1e-12);
+  EXPECT_NEAR(spec.eye[2] / distance, 5 / std::sqrt(43.0), 1e-12);
+  EXPECT_EQ(spec.target, (std::array<double, 3>{0, 0, 0}));
+
+  // Flat, long and shifted boxes, wide and tall images: every corner of the box is in the picture.
+  for (const SceneBox& box : {test::axis_box({-3, -3, -0.01}, {3, 3, 0.01}), test::axis_box({10, -1, -1}, {30, 1, 1}),
+                              test::axis_box({-1e-3, 5, 0}, {1e-3, 5.002, 1e-3})}) {
+    const RenderTarget target = test::implicit_target("x+y+z-1e9", box);
+    for (const auto& [w, h] : {std::pair<std::size_t, std::size_t>{200, 100}, {100, 200}, {64, 64}}) {
+      const CameraSpec c = default_camera(target, static_cast<double>(w) / static_cast<double>(h));
+      const Camera camera(c, w, h);
+      for (int corner = 0; corner < 8; ++corner) {
+        std::array<double, 3> q{};
+        for (std::size_t i = 0; i < 3; ++i) q[i] = (corner >> i & 1) ? target.box_hi()[i] : target.box_lo()[i];
+        std::array<double, 3> v{q[0] - c.eye[0], q[1] - c.eye[1], q[2] - c.eye[2]};
+        const auto dot = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+          return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        };
+        const double depth = dot(v, camera.forward());
+        ASSERT_GT(depth, 0);
+        // uv on the image plane (height 1 at focal distance 1), then pixels.
+        const double px = dot(v, camera.right()) / depth * static_cast<double>(h) + static_cast<double>(w) / 2;
+        const double py = static_cast<double>(h) / 2 - dot(v, camera.up()) / depth * static_cast<double>(h);
+        EXPECT_GE(px, 0);
+        EXPECT_LE(px, static_cast<double>(w));
+        EXPECT_GE(py, 0);
+        EXPECT_LE(py, static_cast<double>(h));
+      }
+    }
+  }
+}
+
+TEST(DefaultCamera, LooksAtTheBoxFittedToAPatch) {
+  // A patch without a box: the leaf's box is fitted to it, not the scene box [-2, 2]^3.
+  SceneNode node;
+  node.kind = NodeKind::parametric;
+  node.leaf.coordinates = {"s+10", "t", "s*t"};
+  node.leaf.domain = {{Rational(0), Rational(1)}, {Rational(0), Rational(1)}};
+  const RenderTarget patch = RenderTarget::compile(node, SceneParams{});
+  EXPECT_NEAR(patch.box_centre()[0], 10.5, 0.01);
+  EXPECT_NEAR(patch.box_centre()[1], 0.5, 0.01);
+  EXPECT_LT(patch.length_unit(), 0.3);
+  EXPECT_EQ(default_camera(patch).target, patch.box_centre());
+  // And the render sees it: a good share of the pixels hit.
+  const RenderResult r = render_image(patch, settings_for(patch, 48, 48, 1));
+  EXPECT_GT(r.stats.hits, r.stats.rays / 20);
+}
+
+TEST(RenderImage, APlaneCurveIsDrawnFlatByRenderCurve) {
+  const RenderTarget circle = RenderTarget::compile(
+      test::implicit_node("x^2+y^2-1"), SceneParams{SdfMode::fast, SceneBox::default_box(), "c", "scene", 2});
+  ASSERT_EQ(circle.dimension(), 2);
+  RenderParams s;
+  s.width = 60;
+  s.height = 40;
+  const RenderResult drawn = render_image(circle, s);
+  const RenderResult flat = render_curve(circle, 60, 40);
+  EXPECT_TRUE(drawn.image == flat.image);
+  EXPECT_EQ(drawn.stats.rays, 60u * 40u);
+  EXPECT_EQ(drawn.stats.evaluations, 60u * 40u);
 }
 
 }  // namespace

@@ -12,7 +12,10 @@
 // mode; Copy GLSL puts that text on the clipboard; errors appear beside the right
 // input with the server's position selected and marked; Cancel aborts a long
 // Gröbner computation and the server counts it cancelled; without WebGL2 the page
-// says so and shows the server's CPU image; examples.json matches shared/bench.
+// says so and shows the server's CPU image; examples.json matches shared/bench;
+// the hyperbolic paraboloid, Enneper's surface and a bicubic patch are drawn as
+// two-sided sheets (both side colours, the CPU renderer's sheet and not its solid with
+// caps), and a plane curve is drawn flat, as the CPU renderer draws it.
 // It saves a 1280×800 screenshot, docs/images/web_client.png for the README when that
 // is missing or UPDATE_SCREENSHOT=1 (else in the temporary folder). The server and
 // browser setup is harness.mjs, shared with embed_example.test.mjs.
@@ -119,30 +122,55 @@ async function currentFrame() {
   return page.evaluate(() => Number(document.getElementById('preview').dataset.frame || 0));
 }
 
+/// Waits until the preview has finished an image newer than frame `afterFrame` whose
+/// canvas attributes satisfy `predicate(dataset, arg)` (run in the page: it sees only
+/// its arguments).
+async function waitForFrame(afterFrame, predicate, arg = null, timeout = 180000) {
+  await page.waitForFunction(
+    ([f, source, a]) => {
+      const d = document.getElementById('preview').dataset;
+      // eslint-disable-next-line no-new-func
+      return d.state === 'done' && Number(d.frame || 0) > f && new Function('d', 'a', `return (${source})(d, a);`)(d, a);
+    },
+    [afterFrame, predicate.toString(), arg],
+    { timeout, polling: 100 },
+  );
+}
+
+/// POST /v1/render of the view on the canvas (its object, shape, box, eye, target,
+/// size, AA), with `overrides`; returns the decoded PNG.
+async function renderSameView(view, overrides = {}, t = null) {
+  const request = {
+    ...JSON.parse(view.request),
+    mode: view.mode,
+    box: JSON.parse(view.box),
+    width: Number(view.width),
+    height: Number(view.height),
+    aa: Number(view.aa),
+    method: 'sphere',
+    timeout_ms: 300000,
+    ...overrides,
+  };
+  if (view.eye) {
+    request.eye = JSON.parse(view.eye);
+    request.target = JSON.parse(view.target);
+  }
+  const started = Date.now();
+  const r = await post('/v1/render', request);
+  assert.equal(r.status, 200, r.body.toString('utf8').slice(0, 300));
+  assert.equal(r.headers.get('content-type'), 'image/png');
+  if (t) t.diagnostic(`CPU render (${JSON.stringify(overrides)}) ${Date.now() - started} ms`);
+  return decodePng(r.body);
+}
+
 /// Compares the canvas with POST /v1/render of the same view; returns the IoU.
 async function compareWithCpuRenderer(equation, mode, t) {
   const canvas = await readCanvas();
   const v = canvas.view;
   assert.equal(v.function !== undefined, true, 'the canvas says which function it draws');
-  const request = {
-    implicit: equation,
-    mode,
-    box: JSON.parse(v.box),
-    eye: JSON.parse(v.eye),
-    target: JSON.parse(v.target),
-    width: Number(v.width),
-    height: Number(v.height),
-    aa: Number(v.aa),
-    method: 'sphere',
-    timeout_ms: 300000,
-  };
-  assert.equal(request.width, canvas.width);
-  assert.equal(request.height, canvas.height);
+  assert.equal(v.mode, mode);
   const started = Date.now();
-  const r = await post('/v1/render', request);
-  assert.equal(r.status, 200, r.body.toString('utf8').slice(0, 300));
-  assert.equal(r.headers.get('content-type'), 'image/png');
-  const png = decodePng(r.body);
+  const png = await renderSameView(v);
   assert.equal(png.width, canvas.width);
   assert.equal(png.height, canvas.height);
   const gpuMask = silhouette(canvas.rgb, canvas.width, canvas.height);
@@ -160,7 +188,7 @@ async function compareWithCpuRenderer(equation, mode, t) {
   diffs.sort((a, b) => a - b);
   const meanDiff = diffs.reduce((s, v) => s + v, 0) / Math.max(1, diffs.length);
   const p99 = diffs.length ? diffs[Math.floor(0.99 * (diffs.length - 1))] : 0;
-  const line = `${equation} (${mode}, ${canvas.width}x${canvas.height}, AA ${request.aa}): IoU ${score.toFixed(4)}, ` +
+  const line = `${equation} (${mode}, ${canvas.width}x${canvas.height}, AA ${v.aa}): IoU ${score.toFixed(4)}, ` +
     `surface pixels GPU ${gpuCount} / CPU ${cpuCount}, colour |GPU - CPU| mean ${meanDiff.toFixed(2)} p99 ${p99} ` +
     `(of 255), CPU render ${Date.now() - started} ms`;
   t.diagnostic(line);
@@ -170,6 +198,21 @@ async function compareWithCpuRenderer(equation, mode, t) {
   // Same shading model: a loose bound (the normals differ, docs: clients/web/README.md).
   assert.ok(meanDiff < 2, `mean colour difference ${meanDiff} < 2 of 255`);
   return score;
+}
+
+/// The surface pixels of an image by side colour: warm (a sheet's front, or a solid)
+/// where red exceeds blue by more than 16, blue (a sheet's back) where blue exceeds red
+/// by more than 16 (the two albedos, (0.80, 0.52, 0.30) and (0.25, 0.42, 0.80), keep
+/// that order under any grey light and the gamma).
+function sideCounts(rgb, mask) {
+  let warm = 0, blue = 0;
+  for (let p = 0; p < mask.length; ++p) {
+    if (!mask[p]) continue;
+    const r = rgb[3 * p], b = rgb[3 * p + 2];
+    if (r > b + 16) ++warm;
+    else if (b > r + 16) ++blue;
+  }
+  return { warm, blue };
 }
 
 async function setMode(mode) {
@@ -237,7 +280,8 @@ test('the sphere: equation, facts, scripts, the GLSL of /v1/sdf, and the silhoue
   assert.match(await page.textContent('#reproduce-singular'), /eliminate/);
   assert.match(await page.textContent('#reproduce-macaulay2'), /eliminate/);
   // The page shows, and the shader contains, exactly what POST /v1/sdf answers.
-  const reference = await postJson('/v1/sdf', { implicit: 'x^2+y^2+z^2-1', mode: 'fast', box: [-2, -2, -2, 2, 2, 2], name: 'surface' });
+  // The page posts the parametric surface itself, with the shape it asks for (auto).
+  const reference = await postJson('/v1/sdf', { ...SPHERE, shape: 'auto', mode: 'fast', box: [-2, -2, -2, 2, 2, 2], name: 'surface' });
   assert.equal(reference.status, 200);
   await page.waitForFunction((g) => document.getElementById('glsl').textContent === g, reference.json.glsl, { timeout: 30000 });
   await waitForImage('x^2+y^2+z^2-1', 'fast', frame);
@@ -259,7 +303,10 @@ test("Steiner's surface from the examples menu, in safe mode: equation and silho
   frame = await currentFrame();
   await page.selectOption('#examples', 'steiner_roman');
   assert.equal(await page.inputValue('#x'), steiner.x);
-  assert.equal(await page.inputValue('#box'), '-1, -1, -1, 1, 1, 1');
+  // The patch's box is fitted by the server (the box input stays empty), its domain the
+  // default (the whole plane: the parametrization is bounded on it).
+  assert.equal(await page.inputValue('#box'), '');
+  assert.equal(await page.inputValue('#domain'), '');
   const equation = 'x^2*y^2+x^2*z^2+y^2*z^2-x*y*z';
   await page.waitForFunction((eq) => document.getElementById('implicit').dataset.equation === eq, equation, { timeout: 30000 });
   assert.equal(await page.textContent('#degree'), '4');
@@ -407,6 +454,110 @@ test('typing an implicit equation directly draws it', async () => {
   assert.equal(await page.textContent('#implicit'), `${torus} = 0`);
   assert.equal(await page.textContent('#degree'), '4');
   assert.equal(await page.isHidden('#equation-error'), true);
+});
+
+// Issue 18: open surfaces and patches are sheets, drawn two-sided (SURFER's colours:
+// warm where F > 0 faces the viewer, blue where F < 0 does), not solids cut by their
+// box. Each example is picked from the menu (its patch over its domain, shape auto); the
+// page's picture must show both side colours, match the CPU renderer's sheet of the
+// same view (POST /v1/render, IoU >= 0.9), and not its solid (shape "solid": the
+// algebraic surface's solid F <= 0 clipped to the same box, with its caps): IoU with
+// that below 0.9, and the sheet has no pixel the box's caps would add.
+test('the hyperbolic paraboloid, Enneper\'s surface and a bicubic patch are two-sided sheets', async (t) => {
+  await page.click('#tab-parametric');
+  await setMode('fast');
+  for (const name of ['hyperbolic_paraboloid', 'enneper', 'bicubic_patch']) {
+    const frame = await currentFrame();
+    await page.selectOption('#examples', name);
+    await waitForFrame(frame, (d, n) => d.function === `${n}_sdf` && d.sides === 'two' && d.mode === 'fast', name);
+    assert.equal(await page.getAttribute('#preview', 'data-function'), `${name}_sdf`);
+    assert.equal(await page.getAttribute('#preview', 'data-shape'), 'sheet', `${name} is a sheet`);
+    assert.match(await page.textContent('#glsl-summary'), new RegExp(`${name}_sdf\\(vec3 p\\) · fast mode · sheet`));
+    const canvas = await readCanvas();
+    const mask = silhouette(canvas.rgb, canvas.width, canvas.height);
+    const surface = mask.reduce((s, v) => s + v, 0);
+    const sides = sideCounts(canvas.rgb, mask);
+    t.diagnostic(`${name}: ${surface} surface pixels, ${sides.warm} warm (F > 0 side), ${sides.blue} blue (F < 0 side)`);
+    assert.ok(surface > 0.02 * canvas.width * canvas.height, `${name}: the canvas shows the surface (${surface} pixels)`);
+    assert.ok(sides.warm > 0.01 * surface, `${name}: the F > 0 side appears (${sides.warm} of ${surface})`);
+    assert.ok(sides.blue > 0.01 * surface, `${name}: the F < 0 side appears (${sides.blue} of ${surface})`);
+
+    const sheet = await renderSameView(canvas.view, {}, t);
+    const sheetMask = silhouette(sheet.rgb, sheet.width, sheet.height);
+    const cpuSides = sideCounts(sheet.rgb, sheetMask);
+    const withSheet = iou(mask, sheetMask);
+    const implicit = await page.getAttribute('#implicit', 'data-equation');
+    const solid = await renderSameView(canvas.view, { x: undefined, y: undefined, z: undefined, domain: undefined, implicit, shape: 'solid' }, t);
+    const solidMask = silhouette(solid.rgb, solid.width, solid.height);
+    const withSolid = iou(mask, solidMask);
+    let capOnly = 0;
+    for (let p = 0; p < mask.length; ++p) if (solidMask[p] && !sheetMask[p]) ++capOnly;
+    t.diagnostic(`${name}: IoU with the CPU sheet ${withSheet.toFixed(4)} (CPU: ${cpuSides.warm} warm, ${cpuSides.blue} blue), ` +
+      `with the CPU solid ${withSolid.toFixed(4)}; ${capOnly} pixels only the solid's caps cover`);
+    assert.ok(withSheet >= IOU_MIN, `${name}: the page draws the CPU renderer's sheet (IoU ${withSheet})`);
+    assert.ok(Math.abs(cpuSides.blue - sides.blue) <= 0.1 * surface, `${name}: the same share of blue as the CPU renderer`);
+    assert.ok(withSolid < IOU_MIN, `${name}: not the solid cut by its box (IoU ${withSolid})`);
+    let gpuOnCaps = 0;
+    for (let p = 0; p < mask.length; ++p) if (mask[p] && solidMask[p] && !sheetMask[p]) ++gpuOnCaps;
+    assert.ok(gpuOnCaps <= 0.02 * capOnly + 20, `${name}: nothing drawn where only the caps would be (${gpuOnCaps} of ${capOnly})`);
+  }
+});
+
+// A plane curve (no z) is drawn flat: `NAME_sdf(vec2 p)`, a 2-D picture of the box with
+// its grid and the curve as a line, the same picture as the CPU renderer's.
+test('a plane curve is drawn in 2-D, as the CPU renderer draws it', async (t) => {
+  await page.click('#tab-parametric');
+  const frame = await currentFrame();
+  await page.selectOption('#examples', 'lemniscate');
+  assert.equal(await page.inputValue('#z'), '');
+  await waitForFrame(frame, (d) => d.function === 'lemniscate_sdf' && d.dimension === '2');
+  assert.equal(await page.textContent('#implicit'), 'x^4+2*x^2*y^2+y^4-x^2+y^2 = 0');
+  assert.match(await page.textContent('#glsl-summary'), /lemniscate_sdf\(vec2 p\)/);
+  assert.match(await page.textContent('#glsl'), /float lemniscate_sdf\(vec2 p\)/);
+  const canvas = await readCanvas();
+  const v = canvas.view;
+  assert.equal(v.eye, undefined, 'no camera: a flat view');
+  const box = JSON.parse(v.box);
+  assert.equal(box.length, 4, 'a curve\'s box is x0, y0, x1, y1');
+  // The line's pixels: dark blue (the curve colour (0.09, 0.20, 0.55) at full cover).
+  const line = (rgb, p) => rgb[3 * p + 2] > rgb[3 * p] + 60 && rgb[3 * p] < 150;
+  const { width, height } = canvas;
+  let gpuLine = 0, light = 0;
+  const gpuMask = new Uint8Array(width * height), cpuMask = new Uint8Array(width * height);
+  for (let p = 0; p < width * height; ++p) {
+    if (line(canvas.rgb, p)) (gpuMask[p] = 1), ++gpuLine;
+    if (Math.min(canvas.rgb[3 * p], canvas.rgb[3 * p + 1], canvas.rgb[3 * p + 2]) > 200) ++light;
+  }
+  t.diagnostic(`lemniscate: ${gpuLine} line pixels, ${light} light (paper, grid, tint) of ${width * height}`);
+  assert.ok(light > 0.8 * width * height, 'a light 2-D picture, not a shaded solid');
+  // The figure eight is 5.24 units long (a = 1): at least 3 units of it in line pixels.
+  const scale = Math.min(width / (box[2] - box[0]), height / (box[3] - box[1]));
+  assert.ok(gpuLine > 3 * scale, `the curve is drawn (${gpuLine} line pixels, ${scale} px per unit)`);
+  const png = await renderSameView(v, {}, t);
+  assert.equal(png.width, width);
+  let cpuLine = 0, diff = 0;
+  for (let p = 0; p < width * height; ++p) {
+    if (line(png.rgb, p)) (cpuMask[p] = 1), ++cpuLine;
+    for (let k = 0; k < 3; ++k) diff += Math.abs(png.rgb[3 * p + k] - canvas.rgb[3 * p + k]);
+  }
+  const score = iou(gpuMask, cpuMask);
+  const meanDiff = diff / (3 * width * height);
+  t.diagnostic(`lemniscate: line pixels GPU ${gpuLine} / CPU ${cpuLine}, IoU ${score.toFixed(4)}, mean |GPU - CPU| ${meanDiff.toFixed(3)} of 255`);
+  assert.ok(score >= 0.9, `the page's line is the CPU renderer's (IoU ${score})`);
+  assert.ok(meanDiff < 2, `the same picture (mean difference ${meanDiff} of 255)`);
+  // Dragging pans the view.
+  const before = JSON.parse(v.view);
+  const rect = await page.locator('#preview').boundingBox();
+  const f = await currentFrame();
+  await page.mouse.move(rect.x + rect.width / 2, rect.y + rect.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(rect.x + rect.width / 2 + 40, rect.y + rect.height / 2, { steps: 2 });
+  await page.mouse.up();
+  await waitForFrame(f, (d) => d.dimension === '2');
+  const after = JSON.parse(await page.getAttribute('#preview', 'data-view'));
+  assert.ok(after.centre[0] < before.centre[0], 'dragging right moves the view left');
+  assert.equal(after.scale, before.scale);
+  await page.click('#reset-view');
 });
 
 test('a long request shows its elapsed time and Cancel stops it, here and on the server', async () => {

@@ -1,6 +1,7 @@
 #include "implicitizer/render/march_ray.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/render/root_isolation.hpp"
@@ -32,14 +33,77 @@ void hit_at(MarchResult& r, double t) {
   r.t = t;
 }
 
+// Sheets. A sheet's value is >= 0 on both sides of the surface, so the signed hit rule,
+// which catches a solid's crossings (a step that lands inside reads f < 0), never sees
+// a step that jumps across it: in mode fast (F/|∇F| is not a bound) such steps left
+// holes in the picture. With the algebraic surface at hand, the sign of G at the points
+// a march accepts shows the jump: the crossing is bisected on G's sign (in double, to
+// 1e-3·ε) and is a hit when the scene's value there is below ε, i.e. when it lies on
+// the drawn part of the surface (off a trimmed patch the value there is the distance to
+// the patch and the march goes on). Two crossings within one step (a thin fold) still
+// cancel; in mode safe the steps never cross, and the test is only a cost: one value of
+// G per step.
+class SheetCrossing {
+ public:
+  SheetCrossing(const RenderTarget& target, const Ray& ray)
+      : surface_(target.shape() == SdfShape::sheet && target.algebraic() ? &*target.algebraic() : nullptr), ray_(ray) {}
+
+  // The crossing of the drawn sheet between the last accepted point and t (> it), if
+  // any; t becomes the last accepted point.
+  std::optional<double> accept(double t, const RayFunction& f, const MarchParams& params) {
+    if (!surface_) return std::nullopt;
+    const int sign = sign_at(t);
+    std::optional<double> hit;
+    if (sign != 0 && last_sign_ != 0 && sign != last_sign_ && t > last_t_) {
+      double a = last_t_, b = t;  // sign_at(a) = last_sign_, sign_at(b) = -last_sign_
+      for (int i = 0; i < 80 && b - a > 1e-3 * params.epsilon; ++i) {
+        const double m = 0.5 * (a + b);
+        const int s = sign_at(m);
+        if (s == 0) {
+          a = b = m;
+        } else if (s == last_sign_) {
+          a = m;
+        } else {
+          b = m;
+        }
+      }
+      const double c = 0.5 * (a + b);
+      if (f(c) < params.epsilon) hit = c;
+    }
+    if (sign != 0) {
+      last_sign_ = sign;
+      last_t_ = t;
+    }
+    return hit;
+  }
+
+ private:
+  int sign_at(double t) const {
+    const AlgebraicSurface& a = *surface_;
+    const auto& o = ray_.origin;
+    const auto& d = ray_.direction;
+    const double g = a.value_program
+                         .evaluate((o[0] + t * d[0] - a.centre[0]) * a.scale, (o[1] + t * d[1] - a.centre[1]) * a.scale,
+                                   (o[2] + t * d[2] - a.centre[2]) * a.scale)
+                         .value;
+    return g > 0 ? 1 : g < 0 ? -1 : 0;
+  }
+
+  const AlgebraicSurface* surface_;
+  const Ray& ray_;
+  int last_sign_ = 0;
+  double last_t_ = 0;
+};
+
 // Hart's sphere tracing. A NaN value fails every comparison: it is neither a hit
 // nor a step, so the ray stops as a miss (counted by the caller as no hit).
-void march_sphere(const RayFunction& f, const MarchParams& params, MarchResult& r) {
+void march_sphere(const RayFunction& f, SheetCrossing& crossing, const MarchParams& params, MarchResult& r) {
   double t = params.t_min;
   for (; r.steps < params.max_steps; ++r.steps) {
     const double value = f(t);
     if (value < params.epsilon) return hit_at(r, t);
     if (!(value < HUGE_VAL)) return;  // NaN or +inf: nothing to step by
+    if (const auto c = crossing.accept(t, f, params)) return hit_at(r, *c);
     t += value;
     if (t > params.t_max) return;
   }
@@ -57,7 +121,7 @@ void march_sphere(const RayFunction& f, const MarchParams& params, MarchResult& 
 // far-field distance to the box is much larger than the value inside it), and
 // keeping ω = 1 after it made enhanced cost one evaluation more than sphere on
 // every surface measured (docs/render.md).
-void march_enhanced(const RayFunction& f, const MarchParams& params, MarchResult& r) {
+void march_enhanced(const RayFunction& f, SheetCrossing& crossing, const MarchParams& params, MarchResult& r) {
   const double omega = params.omega;
   double t = params.t_min;
   double previous_t = t, previous_radius = 0;
@@ -73,6 +137,7 @@ void march_enhanced(const RayFunction& f, const MarchParams& params, MarchResult
     }
     if (value < params.epsilon) return hit_at(r, t);
     if (!(value < HUGE_VAL)) return;
+    if (const auto c = crossing.accept(t, f, params)) return hit_at(r, *c);
     previous_t = t;
     previous_radius = value;
     relaxed = omega > 1;
@@ -155,7 +220,8 @@ double newton_target(double t, double value, double slope, bool forward, const M
   return std::abs(slope) >= params.min_slope ? t - value / slope : HUGE_VAL;
 }
 
-void march_newton(const RayFunction& f, const MarchParams& params, bool forward, MarchResult& r) {
+void march_newton(const RayFunction& f, SheetCrossing& crossing, const MarchParams& params, bool forward,
+                  MarchResult& r) {
   double t = params.t_min;
   const double delta = params.derivative_step;
   double previous_t = t, previous_value = 0;
@@ -174,6 +240,7 @@ void march_newton(const RayFunction& f, const MarchParams& params, bool forward,
       return refine_bracket(f, params, previous_t, previous_value, t, value, r);
     }
     if (!std::isfinite(value)) return;
+    if (const auto c = crossing.accept(t, f, params)) return hit_at(r, *c);
     double slope;
     if (params.check_newton_steps && has_previous) {
       slope = (value - previous_value) / (t - previous_t);
@@ -206,7 +273,9 @@ void march_newton(const RayFunction& f, const MarchParams& params, bool forward,
 // the frame, u = (o − c)·s + t·(d·s), which keeps t. Where the clipped segment
 // starts inside the solid (G < 0: the box cuts the solid, or the eye is inside), the
 // scene's value changes sign there, and the value-based methods stop there: so does
-// this one (not for a trimmed sheet, which has no inside).
+// this one (not for a sheet, which has no inside). On a sheet a root is a hit only
+// where the scene's value is below ε: a trimmed patch draws part of F = 0 in its box,
+// so roots off the patch are passed and the next one is sought.
 void march_exact(const RenderTarget& target, const Ray& ray, const MarchParams& params, const Budget& budget,
                  MarchResult& r) {
   const AlgebraicSurface& a = *target.algebraic();
@@ -229,18 +298,29 @@ void march_exact(const RenderTarget& target, const Ray& ray, const MarchParams& 
     direction[i] = ray.direction[i] * a.scale;
   }
   ++r.evaluations;  // the sign of G where the segment starts
-  if (!a.trimmed) {
+  const bool sheet = target.shape() == SdfShape::sheet;
+  if (!sheet) {
     const ValueAndGradient<double> start =
         a.program.evaluate(origin[0] + t0 * direction[0], origin[1] + t0 * direction[1], origin[2] + t0 * direction[2]);
     if (start.value < 0) return hit_at(r, t0);
   }
   RootIsolationParams options;
   options.scale = target.length_unit();
-  const std::optional<RayRoot> root =
-      first_ray_root(*a.ray_context, origin, direction, t0, t1, options, nullptr, budget);
-  if (!root) return;
-  r.steps = static_cast<std::uint32_t>(root->subdivisions);
-  hit_at(r, root->t);
+  // At most max_steps roots are tried on a sheet (each costs a root isolation).
+  for (std::uint32_t tried = 0; tried < params.max_steps && t0 <= t1; ++tried) {
+    const std::optional<RayRoot> root =
+        first_ray_root(*a.ray_context, origin, direction, t0, t1, options, nullptr, budget);
+    if (!root) return;
+    r.steps += static_cast<std::uint32_t>(root->subdivisions);
+    if (!sheet) return hit_at(r, root->t);
+    const auto& o = ray.origin;
+    const auto& d = ray.direction;
+    ++r.evaluations;
+    const double t = root->t;
+    if (target.evaluate({o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]}) < params.epsilon) return hit_at(r, t);
+    // Past this root by the root isolation's tolerance, so that it is not found again.
+    t0 = t + 2 * options.relative_tolerance * std::max(options.scale, t) + params.epsilon * 1e-3;
+  }
 }
 
 }  // namespace
@@ -288,18 +368,19 @@ MarchResult march_ray(const RenderTarget& target, const Ray& ray, MarchMethod me
                       const Budget& budget) {
   MarchResult result;
   const RayFunction f(target, ray, result);
+  SheetCrossing crossing(target, ray);
   switch (method) {
     case MarchMethod::sphere:
-      march_sphere(f, params, result);
+      march_sphere(f, crossing, params, result);
       return result;
     case MarchMethod::enhanced:
-      march_enhanced(f, params, result);
+      march_enhanced(f, crossing, params, result);
       return result;
     case MarchMethod::newton:
-      march_newton(f, params, false, result);
+      march_newton(f, crossing, params, false, result);
       return result;
     case MarchMethod::forward_newton:
-      march_newton(f, params, true, result);
+      march_newton(f, crossing, params, true, result);
       return result;
     case MarchMethod::exact:
       break;

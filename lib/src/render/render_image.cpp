@@ -11,6 +11,7 @@
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/core/memory_account.hpp"
 #include "implicitizer/core/stopwatch.hpp"
+#include "implicitizer/render/render_curve.hpp"
 
 namespace implicitizer {
 namespace {
@@ -111,7 +112,24 @@ class TileRenderer {
 
 }  // namespace
 
-CameraSpec default_camera(const RenderTarget& target) {
+CameraSpec default_camera(const RenderTarget& target, double aspect) {
+  CameraSpec spec;
+  const auto& lo = target.box_lo();
+  const auto& hi = target.box_hi();
+  const double radius = 0.5 * std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                        (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  // The image plane has height 1 at distance focal: tan(α) = (min(1, aspect)/2)/focal.
+  const double half_extent = std::isfinite(aspect) && aspect > 0 ? std::min(1.0, aspect) / 2 : 0.5;
+  const double sin_alpha = half_extent / std::hypot(half_extent, spec.focal_distance);
+  const double distance = radius / sin_alpha;
+  const double norm = std::sqrt(3.0 * 3 + 3 * 3 + 5 * 5);
+  const auto& c = target.box_centre();
+  spec.target = c;
+  spec.eye = {c[0] + distance * 3 / norm, c[1] + distance * 3 / norm, c[2] + distance * 5 / norm};
+  return spec;
+}
+
+CameraSpec seed_camera(const RenderTarget& target) {
   CameraSpec spec;
   const double unit = target.length_unit();
   const auto& c = target.box_centre();
@@ -129,6 +147,7 @@ MarchParams default_render_march_params(const RenderTarget& target, const Camera
 }
 
 RenderResult render_image(const RenderTarget& target, const RenderParams& settings, const Budget& budget) {
+  if (target.dimension() == 2) return render_curve(target, settings.width, settings.height, CurveStyle{}, budget);
   if (settings.antialiasing == 0 || settings.antialiasing > 8) {
     throw InputError("invalid_value", "antialiasing must be 1 to 8 (AA×AA samples per pixel)").in_field("aa");
   }

@@ -1,5 +1,6 @@
 #include "implicitizer/render/render_target.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "implicitizer/core/rational.hpp"
@@ -26,39 +27,46 @@ std::array<double, 3> normalised(const std::array<double, 3>& v) {
 RenderTarget RenderTarget::compile(const SceneNode& root, const SceneParams& options, EvaluationPrecision precision,
                                    const Budget& budget) {
   RenderTarget target(compile_scene(root, options, budget), precision);
+  target.dimension_ = options.dimension;
+  // A scene of one node whose only leaf is polynomial: the root is that leaf, and the
+  // object's box is its frame box (fitted to a patch when the leaf gives none).
+  const CompiledScene& scene = target.scene_;
+  const bool one_leaf = scene.node_count() == 1 && scene.leaves().size() == 1;
+  const SceneBox& box = one_leaf ? scene.leaves().front().frame_box() : options.box;
   double half = 0;
   for (std::size_t i = 0; i < 3; ++i) {
-    const double lo = to_double(options.box.lo[i]), hi = to_double(options.box.hi[i]);
-    target.box_centre_[i] = (lo + hi) / 2;
-    half = std::max(half, (hi - lo) / 2);
+    target.box_lo_[i] = to_double(box.lo[i]);
+    target.box_hi_[i] = to_double(box.hi[i]);
+    target.box_centre_[i] = (target.box_lo_[i] + target.box_hi_[i]) / 2;
+    half = std::max(half, (target.box_hi_[i] - target.box_lo_[i]) / 2);
   }
   // The default box has half side 2 and the first thesis' scene is of that size.
   target.length_unit_ = half / 2;
+  if (!one_leaf) return target;
 
-  // A scene of one node whose only leaf is polynomial: the root is that leaf.
-  const CompiledScene& scene = target.scene_;
-  if (scene.node_count() == 1 && scene.leaves().size() == 1) {
-    const PolynomialLeaf& leaf = scene.leaves().front();
-    const SceneFrame frame = make_scene_frame(leaf.frame_box());
-    Polynomial framed = frame_polynomial(leaf.equation(), frame, budget);
-    PolynomialProgram program = PolynomialProgram::compile(framed);
-    auto context = std::make_shared<const RayPolynomialContext>(framed);
-    AlgebraicSurface surface{leaf.equation(),    std::move(framed),  {}, to_double(frame.scale),
-                             std::move(program), std::move(context), {}, {},
-                             leaf.trimmed()};
-    for (std::size_t i = 0; i < 3; ++i) surface.centre[i] = to_double(frame.centre[i]);
-    if (surface.trimmed) {
-      surface.lo = {leaf.trim_lo().x, leaf.trim_lo().y, leaf.trim_lo().z};
-      surface.hi = {leaf.trim_hi().x, leaf.trim_hi().y, leaf.trim_hi().z};
-    } else {
-      // The leaf is the solid F <= 0 clipped to its box |u_i| <= 1 (docs/sdf.md §3).
-      for (std::size_t i = 0; i < 3; ++i) {
-        surface.lo[i] = surface.centre[i] - 1 / surface.scale;
-        surface.hi[i] = surface.centre[i] + 1 / surface.scale;
-      }
-    }
-    target.algebraic_ = std::move(surface);
+  const PolynomialLeaf& leaf = scene.leaves().front();
+  target.shape_ = leaf.shape();
+  const SceneFrame frame = make_scene_frame(leaf.frame_box());
+  // G has the sign of the leaf's value near the surface: −F for a solid whose enclosed
+  // region is where F > 0 (PolynomialLeaf::negated()), so that the exact method's
+  // "G < 0 where the segment starts" still means inside. Sheets are never negated:
+  // their sides keep F's own sign (F > 0 is the warm side).
+  Polynomial framed = frame_polynomial(leaf.negated() ? -leaf.equation() : leaf.equation(), frame, budget);
+  PolynomialProgram program = PolynomialProgram::compile(framed);
+  PolynomialProgram value_program = PolynomialProgram::compile(framed, ProgramOutputs::value);
+  auto context = std::make_shared<const RayPolynomialContext>(framed);
+  AlgebraicSurface surface{leaf.equation(),    std::move(framed),       {}, to_double(frame.scale),
+                           std::move(program), std::move(context),      {}, {},
+                           leaf.trimmed(),     std::move(value_program)};
+  for (std::size_t i = 0; i < 3; ++i) surface.centre[i] = to_double(frame.centre[i]);
+  // The value is clipped to the frame's cube |u_i| <= 1 (docs/sdf.md §3), a solid's
+  // caps and a sheet's ends alike; a trimmed patch lies inside it too, and the exact
+  // method passes the roots off the patch by the value there (march_ray.cpp).
+  for (std::size_t i = 0; i < 3; ++i) {
+    surface.lo[i] = surface.centre[i] - 1 / surface.scale;
+    surface.hi[i] = surface.centre[i] + 1 / surface.scale;
   }
+  target.algebraic_ = std::move(surface);
   return target;
 }
 
@@ -71,14 +79,18 @@ double RenderTarget::evaluate(const std::array<double, 3>& p) const {
 }
 
 std::array<double, 3> RenderTarget::normal(const std::array<double, 3>& p, std::uint64_t* evaluations) const {
-  if (algebraic_) {
-    const AlgebraicSurface& a = *algebraic_;
-    const ValueAndGradient<double> g = a.program.evaluate(
-        (p[0] - a.centre[0]) * a.scale, (p[1] - a.centre[1]) * a.scale, (p[2] - a.centre[2]) * a.scale);
-    const std::array<double, 3> n = normalised(g.gradient);
-    if (n[0] != 0 || n[1] != 0 || n[2] != 0) return n;
-  }
+  if (const auto g = equation_gradient(p)) return *g;
   return tetrahedron_normal(p, evaluations);
+}
+
+std::optional<std::array<double, 3>> RenderTarget::equation_gradient(const std::array<double, 3>& p) const {
+  if (!algebraic_) return std::nullopt;
+  const AlgebraicSurface& a = *algebraic_;
+  const ValueAndGradient<double> g = a.program.evaluate((p[0] - a.centre[0]) * a.scale, (p[1] - a.centre[1]) * a.scale,
+                                                        (p[2] - a.centre[2]) * a.scale);
+  const std::array<double, 3> n = normalised(g.gradient);
+  if (n[0] == 0 && n[1] == 0 && n[2] == 0) return std::nullopt;
+  return n;
 }
 
 std::array<double, 3> RenderTarget::tetrahedron_normal(const std::array<double, 3>& p,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace implicitizer {
 namespace {
@@ -57,15 +58,23 @@ double ambient_occlusion(const RenderTarget& target, const V& p, const V& n, std
   return std::clamp(1 - occluded, 0.0, 1.0);
 }
 
+SurfaceSide surface_side(const RenderTarget& target, const V& p, const V& direction) {
+  if (target.shape() != SdfShape::sheet) return SurfaceSide::front;
+  // A sheet's value is >= 0 on both sides: only F's gradient knows which side is which.
+  const std::optional<V> g = target.equation_gradient(p);
+  return g && dot3(*g, direction) > 0 ? SurfaceSide::back : SurfaceSide::front;
+}
+
 V shade_hit(const RenderTarget& target, const Ray& ray, double t, const ShadingParams& params,
             std::uint64_t* evaluations) {
   const V p = along(ray.origin, ray.direction, t);
   V n = target.normal(p, evaluations);
   if (dot3(n, ray.direction) > 0) n = {-n[0], -n[1], -n[2]};
+  const V& albedo = surface_side(target, p, ray.direction) == SurfaceSide::back ? params.back_albedo : params.albedo;
   const V view = {-ray.direction[0], -ray.direction[1], -ray.direction[2]};
   const double occlusion = ambient_occlusion(target, p, n, params.occlusion_samples, evaluations);
   V colour{};
-  for (std::size_t c = 0; c < 3; ++c) colour[c] = params.ambient[c] * params.albedo[c] * occlusion;
+  for (std::size_t c = 0; c < 3; ++c) colour[c] = params.ambient[c] * albedo[c] * occlusion;
   for (const DirectionalLight& light : params.lights) {
     const V l = unit(light.direction);
     const double diffuse = std::max(0.0, dot3(n, l));
@@ -75,7 +84,7 @@ V shade_hit(const RenderTarget& target, const Ray& ray, double t, const ShadingP
     const double highlight = std::pow(std::max(0.0, dot3(n, h)), params.shininess) * fresnel;
     const double shadow = params.shadows ? soft_shadow(target, p, l, light.sharpness, params, evaluations) : 1;
     for (std::size_t c = 0; c < 3; ++c) {
-      colour[c] += light.colour[c] * shadow * diffuse * (params.albedo[c] + params.specular[c] * highlight);
+      colour[c] += light.colour[c] * shadow * diffuse * (albedo[c] + params.specular[c] * highlight);
     }
   }
   for (double& c : colour) c = std::pow(std::clamp(c, 0.0, 1.0), 1 / params.gamma);

@@ -33,10 +33,20 @@ struct RenderParams {
   std::size_t tile_size = 16;  ///< tile side in pixels
 };
 
-/// The first thesis' camera scaled to the target: eye = centre + (3, 3, 5)·unit,
-/// looking at the box centre, up (0, 1, 0), focal distance 1 (the seed's field of
-/// view, 53.13° vertically). For the default box this is exactly the seed's camera.
-CameraSpec default_camera(const RenderTarget& target);
+/// The camera that frames the target's object box (RenderTarget::box_lo/box_hi): it
+/// looks at the box centre from the first thesis' direction (3, 3, 5), up (0, 1, 0),
+/// focal distance 1 (the seed's field of view, 2·atan(1/2) = 53.13° vertically), from
+/// the distance R / sin(α) at which the box's bounding sphere (radius R, half the
+/// box's diagonal) is tangent to the narrower half-angle α of the view: atan(1/2)
+/// vertically, atan(aspect/2) across when the image is narrower than tall (aspect =
+/// width/height < 1). So any box, flat or long, is seen whole, at any size.
+CameraSpec default_camera(const RenderTarget& target, double aspect = 1);
+
+/// The first thesis' camera scaled to the target: eye = centre + (3, 3, 5)·unit, looking
+/// at the box centre (for the default box exactly the seed's camera). The fixed view of
+/// the method comparisons (docs/render.md §4, §6, §10, bench/render_accuracy.cpp), so
+/// that their measurements stay those of the thesis' setting; previews use default_camera().
+CameraSpec seed_camera(const RenderTarget& target);
 
 /// default_march_params(target) with t_max measured beyond the eye: t_max =
 /// |eye − box centre| + 100·unit, so that moving the eye away does not clip the scene.
@@ -68,8 +78,9 @@ struct RenderResult {
   RenderStats stats;
 };
 
-/// Renders `target`. Throws InputError `invalid_size` (field "size": width or
-/// height 0 or above 16384, or more than 2^26 pixels), `invalid_value` (field "aa": antialiasing 0 or above 8; field
+/// Renders `target`; a plane curve (target.dimension() == 2) is drawn flat by
+/// render_curve() (render_curve.hpp) with the default CurveStyle. Throws InputError `invalid_size` (field "size": width
+/// or height 0 or above 16384, or more than 2^26 pixels), `invalid_value` (field "aa": antialiasing 0 or above 8; field
 /// "tile_size": 0), `invalid_camera` (camera.hpp), `method_not_applicable` (field
 /// "method": exact on a scene that is not one polynomial leaf); LimitExceeded when
 /// `budget` runs out (checked before each tile and inside exact root isolation),

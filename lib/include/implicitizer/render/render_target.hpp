@@ -15,6 +15,12 @@
 /// coefficients are of size ≤ 1, so double evaluation near the box is well
 /// conditioned), and the exact marcher (march_ray.hpp), which isolates the first
 /// root of F on the ray. Other scenes get normals by the tetrahedron technique.
+///
+/// Shape and sides. The target knows what its value describes (shape()): a single
+/// polynomial leaf is a solid or a sheet (PolynomialLeaf::shape()); any other scene
+/// is drawn as a solid (its value may hold sheets through `shell`, which makes them
+/// thin solids). A sheet has two sides, told apart by the sign of F: shading.hpp
+/// colours the one a ray sees, from ∇G at the hit (docs/render.md §5).
 
 #include <array>
 #include <cstdint>
@@ -27,6 +33,7 @@
 #include "implicitizer/scene/compiled_scene.hpp"
 #include "implicitizer/scene/scene_node.hpp"
 #include "implicitizer/sdf/polynomial_program.hpp"
+#include "implicitizer/sdf/sdf_shape.hpp"
 
 namespace implicitizer {
 
@@ -38,19 +45,25 @@ enum class EvaluationPrecision : std::uint8_t {
 
 /// The algebraic surface of a scene that is one polynomial leaf.
 struct AlgebraicSurface {
-  Polynomial equation;             ///< F(x, y, z): the surface is F = 0 (a parametric leaf's implicitized equation)
-  Polynomial framed;               ///< G(u, v, w) = F(centre + u/scale)/M, exact; G < 0 exactly where F < 0
+  Polynomial equation;  ///< F(x, y, z): the surface is F = 0 (a parametric leaf's implicitized equation)
+  /// G(u, v, w) = ±F(centre + u/scale)/M, exact: −F where the leaf is a solid negated
+  /// (PolynomialLeaf::negated()), so that G < 0 exactly where the value's surface has
+  /// its inside; +F for sheets.
+  Polynomial framed;
   std::array<double, 3> centre{};  ///< the frame's centre c (exactly a float)
   double scale = 1;                ///< the frame's scale s (exactly a float): u = (p − c)·s
   PolynomialProgram program;       ///< G and ∇G (run in double)
   /// G prepared for exact root isolation along rays (shared: one per target).
   std::shared_ptr<const RayPolynomialContext> ray_context;
   /// The scene's surface lies in [lo, hi] and its value is positive outside: the
-  /// leaf's box |u_i| ≤ 1 (the solid F ≤ 0 clipped to it: F's zeros inside plus the
-  /// caps where the faces cut the solid; docs/sdf.md §3), or for a trimmed patch the
-  /// trimming box.
+  /// leaf's box |u_i| ≤ 1 (a solid F ≤ 0 clipped to it: F's zeros inside plus the caps
+  /// where the faces cut the solid; a sheet: F's zeros inside, or a trimmed patch's,
+  /// which lies inside too; docs/sdf.md §3).
   std::array<double, 3> lo{}, hi{};
   bool trimmed = false;  ///< a trimmed parametric patch: an unsigned sheet, no inside
+  /// G alone (run in double): the sign tests with which a march notices that it
+  /// stepped across a sheet (march_ray.hpp).
+  PolynomialProgram value_program;
 };
 
 /// A scene ready to be ray-marched. Copyable; every method is const and thread-safe.
@@ -73,6 +86,10 @@ class RenderTarget {
   /// Returns (0, 0, 0) when neither gives a direction (a flat or NaN value).
   std::array<double, 3> normal(const std::array<double, 3>& p, std::uint64_t* evaluations = nullptr) const;
 
+  /// The unit gradient of G at p (∇F's direction: it points to where F > 0), when the
+  /// target has an algebraic surface and the gradient there is finite and nonzero.
+  std::optional<std::array<double, 3>> equation_gradient(const std::array<double, 3>& p) const;
+
   /// The tetrahedron technique: N = Σ_i k_i f(p + h·k_i), k_i the vertices
   /// (1,−1,−1), (−1,−1,1), (−1,1,−1), (1,1,1), normalised; four evaluations.
   /// Why it works: Taylor gives f(p + h k_i) = f(p) + h k_i·∇f + O(h²); Σ k_i = 0
@@ -85,13 +102,24 @@ class RenderTarget {
   /// The algebraic surface, when the scene is a single polynomial leaf.
   const std::optional<AlgebraicSurface>& algebraic() const { return algebraic_; }
 
-  /// The scene's length unit: half the largest half side of the scene box (1 for
+  /// The object's box: the leaf's frame box when the scene is one polynomial leaf
+  /// (for a parametric leaf without a box, fitted to its patch), else the scene box
+  /// of SceneParams. The camera frames it (render_image.hpp default_camera).
+  const std::array<double, 3>& box_lo() const { return box_lo_; }
+  /// See box_lo().
+  const std::array<double, 3>& box_hi() const { return box_hi_; }
+  /// The scene's length unit: half the largest half side of the object's box (1 for
   /// the default box [−2, 2]³). Defaults of the renderer given in the first
-  /// thesis' units (its hit threshold 1e-4, its miss distance 100, its eye
-  /// (3, 3, 5), its shadow and occlusion distances) are multiplied by it.
+  /// thesis' units (its hit threshold 1e-4, its miss distance 100, its shadow and
+  /// occlusion distances) are multiplied by it.
   double length_unit() const { return length_unit_; }
-  /// The scene box's centre (the default look-at point).
+  /// The object box's centre (the default look-at point).
   const std::array<double, 3>& box_centre() const { return box_centre_; }
+  /// What the value describes: the single polynomial leaf's shape, else solid.
+  SdfShape shape() const { return shape_; }
+  /// 3: a scene in space; 2: a plane curve, evaluated at z = 0 (SceneParams::dimension),
+  /// drawn in the plane by render_curve.hpp.
+  int dimension() const { return dimension_; }
   /// The compiled scene.
   const CompiledScene& scene() const { return scene_; }
   /// The mode it was compiled in.
@@ -105,7 +133,9 @@ class RenderTarget {
   CompiledScene scene_;
   EvaluationPrecision precision_;
   double length_unit_ = 1;
-  std::array<double, 3> box_centre_{};
+  std::array<double, 3> box_lo_{}, box_hi_{}, box_centre_{};
+  SdfShape shape_ = SdfShape::solid;
+  int dimension_ = 3;
   std::optional<AlgebraicSurface> algebraic_;
 };
 

@@ -12,6 +12,13 @@
 /// mode) as the primary ray, with bounded steps. The penumbra estimate min k·f/t
 /// needs a march that steps by |f|, so the shadow march is that one whatever the
 /// primary method; the methods' images then differ only where their hits differ.
+///
+/// Two-sided sheets (SURFER's convention): where the target is a sheet the side the
+/// viewer sees is coloured by the sign of F there: `albedo` (warm) where F > 0 faces the
+/// viewer, i.e. ∇F points towards the eye, `back_albedo` (blue) where F < 0 does. The
+/// normal is ∇F turned to face the viewer on both sides, so the light falls on each
+/// side as on a solid's surface. Solids, and scenes that are not one polynomial leaf,
+/// keep the single `albedo` (render_target.hpp says why scenes have no sides).
 
 #include <array>
 #include <cstdint>
@@ -34,7 +41,8 @@ struct DirectionalLight {
 /// The shading model's numbers.
 struct ShadingParams {
   std::array<double, 3> background{0.95, 0.95, 0.95};        ///< display value of a miss (the seed's grey)
-  std::array<double, 3> albedo{0.80, 0.52, 0.30};            ///< diffuse reflectance R_D
+  std::array<double, 3> albedo{0.80, 0.52, 0.30};            ///< diffuse reflectance R_D (a sheet's F > 0 side)
+  std::array<double, 3> back_albedo{0.25, 0.42, 0.80};       ///< a sheet's F < 0 side
   std::array<double, 3> specular{0.5, 0.5, 0.5};             ///< specular reflectance R_E
   double shininess = 32;                                     ///< Blinn-Phong exponent α
   std::array<double, 3> ambient{0.20, 0.22, 0.26};           ///< ambient radiance times reflectance, L_A·R_A
@@ -47,10 +55,22 @@ struct ShadingParams {
   double gamma = 2.2;                                        ///< display value = linear^(1/gamma)
 };
 
+/// Which side of a surface a ray sees.
+enum class SurfaceSide : std::uint8_t {
+  front,  ///< a solid's outside, or the side of a sheet where F > 0 (∇F points to the viewer)
+  back,   ///< the side of a sheet where F < 0
+};
+
+/// The side of the surface at p that a ray of unit direction `direction` sees: back
+/// when the target is a sheet and ∇F at p points away from the viewer
+/// (∇F·direction > 0); front otherwise (solids, and where ∇F vanishes).
+SurfaceSide surface_side(const RenderTarget& target, const std::array<double, 3>& p,
+                         const std::array<double, 3>& direction);
+
 /// The display colour (each channel in [0, 1]) of the hit at distance t along
 /// `ray`. The normal is target.normal(), turned to face the viewer (an implicit
-/// surface is seen from both sides). Adds the scene evaluations spent (normal,
-/// shadows, occlusion) to *evaluations.
+/// surface is seen from both sides); the albedo is the side's (surface_side). Adds
+/// the scene evaluations spent (normal, shadows, occlusion) to *evaluations.
 std::array<double, 3> shade_hit(const RenderTarget& target, const Ray& ray, double t, const ShadingParams& params,
                                 std::uint64_t* evaluations = nullptr);
 
