@@ -416,6 +416,36 @@ printf '1 2 three\n' >"$WORK/word.txt"
 expect_json "sdf --eval json error" 3 'j["error"]["code"] == "invalid_point" and j["error"]["field"] == "eval" and "line 1" in j["error"]["message"]' \
   sdf --implicit "x+z" --eval "$WORK/word.txt" --json
 expect_status "sdf --eval missing file" 2 "cannot read point file" sdf --implicit "x+z" --eval "$WORK/absent.txt"
+# Shapes picked by auto, and plane curves (issue 18; the semantics are lib/scene's).
+expect_json "sdf auto saddle is a sheet" 0 'j["shape"] == "sheet" and j["dimension"] == 3' sdf --implicit "z-x*y" --json
+# The plane z = 0 as a sheet: |z| (F/|grad F| = z), >= 0 on both sides.
+printf '0.5 0.5 0.25\n-1 1 -0.5\n' | "$BIN" sdf --implicit z --eval - >"$WORK/out" 2>"$WORK/err"
+echo $? >"$WORK/rc"
+if [[ $(status) == 0 && $(cat "$WORK/out") == $'0.25\n0.5' ]]; then pass; else
+  fail "sdf --eval: the plane under auto is a sheet, |z|"
+fi
+expect_json "sdf curve" 0 'j["dimension"] == 2 and j["shape"] == "solid" and j["box"] == [-2, -2, 2, 2] and "float surface_sdf(vec2 p)" in j["glsl"]' \
+  sdf --implicit "x^2+y^2-1" --json
+# The unit circle: (r^2 - 1)/(2r) in the plane, at points "x y".
+printf '2 0\n0.5 0\n' >"$WORK/plane_points.txt"
+run sdf --implicit "x^2+y^2-1" --box -2,-2,2,2 --eval "$WORK/plane_points.txt"
+if [[ $(status) == 0 && $(cat "$WORK/out") == $'0.75\n-0.75' ]]; then pass; else
+  fail "sdf --eval on a curve: the circle's values 0.75 and -0.75"
+fi
+expect_status "sdf --eval curve with z" 3 "invalid_point in eval: line 1: a point is x y" \
+  sdf --implicit "x^2+y^2-1" --eval "$WORK/far.txt"
+expect_json "sdf parametric curve" 0 'j["dimension"] == 2 and j["shape"] == "sheet" and all(abs(a - b) < 1e-12 for a, b in zip(j["box"], [-1.002, -0.002, 1.002, 1.002])) and len(j["box"]) == 4' \
+  sdf --x t --y "t^2" --domain -1,1 --json
+printf '0.5 0.25\n0 0.5\n' >"$WORK/arc_points.txt"
+run sdf --x t --y "t^2" --domain -1,1 --eval "$WORK/arc_points.txt"
+if [[ $(status) == 0 ]] && python3 -c '
+import sys
+v = [float(line) for line in open(sys.argv[1])]
+sys.exit(0 if len(v) == 2 and abs(v[0]) < 1e-6 and v[1] > 0.1 else 1)' "$WORK/out"; then pass; else
+  fail "sdf --eval on a parametric curve: 0 on the arc, positive off it"
+fi
+expect_status "sdf curve domain count" 3 "invalid_domain in domain:" sdf --x t --y "t^2" --domain -1,1,0,1
+expect_json "render curve" 0 'j["dimension"] == 2' render --implicit "x^2+y^2-1" --size 16x16 -o "$WORK/c.png" --json
 
 # render (docs/render.md): a PNG, decoded back here with python3's zlib (8-bit RGB,
 # the five row filters), and the statistics of --json.

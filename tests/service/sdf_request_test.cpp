@@ -105,5 +105,66 @@ TEST(AnswerSdfRequest, ErrorsNameTheRequestsFields) {
   }
 }
 
+// Issue 18's semantics, computed by the library (lib/scene: shapes, curves).
+
+TEST(AnswerSdfRequest, AutoPicksASheetForAnOpenSurface) {
+  SdfRequest r;
+  r.implicit = "z-x*y";  // the saddle meets every face of its box
+  const CompiledSdfRequest saddle = compile_sdf_request(r);
+  const SdfAnswer answer = describe_sdf_request(saddle);
+  ASSERT_TRUE(answer.shape.has_value());
+  EXPECT_EQ(*answer.shape, SdfShape::sheet);
+  // A sheet is >= 0 everywhere, on both sides of the surface.
+  for (const Vec3<float>& p : {Vec3<float>{0.5F, 0.5F, 1.5F}, Vec3<float>{0.5F, 0.5F, -1.5F},
+                               Vec3<float>{-1.0F, 0.2F, 0.0F}, Vec3<float>{3.0F, 3.0F, 3.0F}}) {
+    EXPECT_GE(saddle.scene.evaluate<float>(p), 0.0F) << p.x << " " << p.y << " " << p.z;
+  }
+  // The plane z = 0 as a sheet is |z| (F/|grad F| = z exactly); as a solid, z.
+  r.implicit = "z";
+  const CompiledSdfRequest plane = compile_sdf_request(r);
+  EXPECT_EQ(describe_sdf_request(plane).shape, std::optional<SdfShape>(SdfShape::sheet));
+  EXPECT_FLOAT_EQ(plane.scene.evaluate<float>({0.5F, 0.5F, -0.25F}), 0.25F);
+  r.shape = SdfShape::solid;
+  const CompiledSdfRequest solid = compile_sdf_request(r);
+  EXPECT_EQ(describe_sdf_request(solid).shape, std::optional<SdfShape>(SdfShape::solid));
+  EXPECT_FLOAT_EQ(solid.scene.evaluate<float>({0.5F, 0.5F, -0.25F}), -0.25F);
+}
+
+TEST(AnswerSdfRequest, AnEquationWithoutZIsAPlaneCurve) {
+  SdfRequest r;
+  r.implicit = "x^2+y^2-1";
+  r.box = {"-2", "-2", "2", "2"};
+  const CompiledSdfRequest circle = compile_sdf_request(r);
+  const SdfAnswer answer = describe_sdf_request(circle);
+  EXPECT_EQ(answer.dimension, 2);
+  EXPECT_EQ(circle.scene.dimension(), 2);
+  EXPECT_NE(answer.glsl.find("float surface_sdf(vec2 p)"), std::string::npos);
+  // Closed inside its box: a solid. F/|grad F| = (r^2 - 1)/(2r) in the plane.
+  EXPECT_EQ(answer.shape, std::optional<SdfShape>(SdfShape::solid));
+  EXPECT_FLOAT_EQ(circle.scene.evaluate<float>({2.0F, 0.0F, 0.0F}), 0.75F);
+  EXPECT_FLOAT_EQ(circle.scene.evaluate<float>({0.5F, 0.0F, 0.0F}), -0.75F);
+}
+
+TEST(AnswerSdfRequest, AParametricCurveIsTrimmedToItsDomainAndFitted) {
+  SdfRequest r;
+  r.parametric = std::array<std::string, 3>{"t", "t^2", ""};
+  r.domain = {"-1", "1"};
+  const CompiledSdfRequest parabola = compile_sdf_request(r);
+  const SdfAnswer answer = describe_sdf_request(parabola);
+  EXPECT_EQ(answer.dimension, 2);
+  EXPECT_EQ(answer.shape, std::optional<SdfShape>(SdfShape::sheet));
+  // X([-1, 1]) spans [-1, 1] x [0, 1]; padded by 1e-3 of its largest side, 2.
+  EXPECT_DOUBLE_EQ(answer.box[0], -1.002);
+  EXPECT_DOUBLE_EQ(answer.box[1], -0.002);
+  EXPECT_DOUBLE_EQ(answer.box[3], 1.002);
+  EXPECT_DOUBLE_EQ(answer.box[4], 1.002);
+  EXPECT_NEAR(parabola.scene.evaluate<float>({0.5F, 0.25F, 0.0F}), 0.0F, 1e-6F);  // on the arc
+  EXPECT_GT(parabola.scene.evaluate<float>({0.0F, 0.5F, 0.0F}), 0.1F);           // off it
+  // A curve's domain is one interval.
+  r.domain = {"-1", "1", "0", "1"};
+  const InputError e = input_error_of([&] { answer_sdf_request(r); });
+  EXPECT_EQ(e.code() + "@" + e.field(), "invalid_domain@domain");
+}
+
 }  // namespace
 }  // namespace implicitizer
