@@ -39,15 +39,16 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <cstdlib>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "implicitizer/codec/scene_json.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/core/rational.hpp"
@@ -114,20 +115,15 @@ std::size_t parse_side(const std::string& flag, const std::string& text) {
 /// Reads the command line. Throws InputError `invalid_argument` (field: the flag).
 Config parse_config(int argc, char** argv) {
   Config config;
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
-    const auto take_value = [&]() -> std::string {
-      if (i + 1 >= argc) throw InputError("invalid_argument", flag + " needs a value").in_field(flag);
-      return argv[++i];
-    };
+  FlagReader flags(argc, argv);
+  while (flags.next()) {
+    const std::string& flag = flags.flag();
+    const auto take_value = [&flags] { return flags.value(); };
     if (flag == "--help" || flag == "-h") {
       std::cout << kUsage;
       std::exit(0);
     } else if (flag == "--surface") {
-      std::istringstream in(take_value());
-      for (std::string name; std::getline(in, name, ',');) {
-        if (!name.empty()) config.targets.push_back(name);
-      }
+      config.targets = split_commas(take_value());
     } else if (flag == "--size") {
       const std::string size = take_value();
       const auto x = size.find('x');
@@ -615,14 +611,6 @@ int run(const Config& config) {
 }  // namespace implicitizer::bench
 
 int main(int argc, char** argv) {
-  try {
-    return implicitizer::bench::run(implicitizer::bench::parse_config(argc, argv));
-  } catch (const implicitizer::InputError& e) {
-    std::cerr << "implicitizer-render-accuracy: " << (e.field().empty() ? "" : e.field() + ": ") << e.what() << "\n\n"
-              << implicitizer::bench::kUsage;
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "implicitizer-render-accuracy: " << e.what() << '\n';
-    return 1;
-  }
+  using namespace implicitizer::bench;
+  return run_bench("implicitizer-render-accuracy", kUsage, [&] { return run(parse_config(argc, argv)); });
 }

@@ -45,12 +45,15 @@
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 #include "implicitizer/sdf/fast_sdf.hpp"
 #include "implicitizer/sdf/safe_sdf.hpp"
 #include "sdf/reference_distance.hpp"
+#include "sphere_tracer.hpp"
 #include "surface_suite.hpp"
+#include "text_table.hpp"
 
 #ifndef IMPLICITIZER_BENCH_DIR
 #define IMPLICITIZER_BENCH_DIR "../shared/bench"
@@ -86,37 +89,18 @@ struct Config {
   std::string surfaces_file = std::string(IMPLICITIZER_BENCH_DIR) + "/surfaces_public.json";
 };
 
-/// A whole number in [low, high] from `text`; InputError `invalid_argument` naming
-/// the flag otherwise.
-long parse_count(const std::string& flag, const std::string& text, long low, long high) {
-  try {
-    std::size_t used = 0;
-    const long value = std::stol(text, &used);
-    if (used == text.size() && value >= low && value <= high) return value;
-  } catch (const std::exception&) {
-  }
-  throw InputError("invalid_argument", flag + " needs a whole number in [" + std::to_string(low) + ", " +
-                                           std::to_string(high) + "], not '" + text + "'")
-      .in_field(flag);
-}
-
 /// Reads the command line. Throws InputError `invalid_argument` (field: the flag).
 Config parse_config(int argc, char** argv) {
   Config config;
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
-    const auto take_value = [&]() -> std::string {
-      if (i + 1 >= argc) throw InputError("invalid_argument", flag + " needs a value").in_field(flag);
-      return argv[++i];
-    };
+  FlagReader flags(argc, argv);
+  while (flags.next()) {
+    const std::string& flag = flags.flag();
+    const auto take_value = [&flags] { return flags.value(); };
     if (flag == "--help" || flag == "-h") {
       std::cout << kUsage;
       std::exit(0);
     } else if (flag == "--surface") {
-      std::istringstream in(take_value());
-      for (std::string name; std::getline(in, name, ',');) {
-        if (!name.empty()) config.surfaces.push_back(name);
-      }
+      config.surfaces = split_commas(take_value());
     } else if (flag == "--points") {
       config.points = static_cast<std::size_t>(parse_count(flag, take_value(), 10, 10000000));
     } else if (flag == "--rays") {
@@ -136,18 +120,6 @@ Config parse_config(int argc, char** argv) {
 
 // ---------------------------------------------------------------- measurements
 
-/// What the sphere tracer did over all rays.
-struct TraceStatistics {
-  std::size_t rays = 0;      ///< rays traced: those that meet the box
-  std::size_t hits = 0;      ///< |v| < 1e-4·h reached
-  std::size_t far_hits = 0;  ///< hits farther than 1e-3·h from the zero set
-  std::size_t crossed = 0;   ///< rays on which v changed sign between two steps
-  double farthest_hit = 0;   ///< the largest D at a far hit, in units of h (0 without far hits)
-  std::size_t stalled = 0;   ///< 512 steps without a hit or a miss
-  double mean_steps = 0;     ///< evaluations per ray
-  int max_steps = 0;         ///< the most evaluations of one ray
-};
-
 /// One mode on one surface.
 struct ModeResult {
   std::string mode;
@@ -155,126 +127,6 @@ struct ModeResult {
   TraceStatistics trace;
   double ns_per_evaluation = 0;
 };
-
-constexpr double kHitTolerance = 1e-4;     ///< × h: the tracer stops below this |v|
-constexpr double kFarHitTolerance = 1e-3;  ///< × h: a hit farther than this from the zero set is wrong
-constexpr int kMaxSteps = 512;
-
-/// Sphere tracing with the fp32 estimate (positions in double, rounded to float for
-/// each evaluation, as a shader receives them; the step sum in double so that the
-/// tracer's own rounding does not enter the comparison).
-template <typename Sdf>
-TraceStatistics trace_rays(const Sdf& sdf, const ReferenceDistance& reference, int side) {
-  const testing::DistanceBox& box = reference.box();
-  const double h = box.half_extent();
-  const Point3 c = box.centre();
-  const double n43 = std::sqrt(43.0);  // |(3, 3, 5)|
-  const Point3 eye = {c[0] + 3 * h * 3 / n43, c[1] + 3 * h * 3 / n43, c[2] + 3 * h * 5 / n43};
-  auto normalise = [](Point3 v) {
-    const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    return Point3{v[0] / n, v[1] / n, v[2] / n};
-  };
-  auto cross = [](const Point3& a, const Point3& b) {
-    return Point3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  };
-  const Point3 forward = normalise({c[0] - eye[0], c[1] - eye[1], c[2] - eye[2]});
-  const Point3 right = normalise(cross(forward, {0, 0, 1}));
-  const Point3 up = cross(right, forward);
-  // The field of view frames the box: the largest tangent under which a corner is seen.
-  double tan_half = 0;
-  for (int k = 0; k < 8; ++k) {
-    const Point3 corner = {(k & 1) ? box.hi[0] : box.lo[0], (k & 2) ? box.hi[1] : box.lo[1],
-                           (k & 4) ? box.hi[2] : box.lo[2]};
-    const Point3 r = {corner[0] - eye[0], corner[1] - eye[1], corner[2] - eye[2]};
-    auto dot = [&r](const Point3& e) { return r[0] * e[0] + r[1] * e[1] + r[2] * e[2]; };
-    tan_half = std::max({tan_half, std::fabs(dot(right)) / dot(forward), std::fabs(dot(up)) / dot(forward)});
-  }
-  TraceStatistics stats;
-  double total_steps = 0;
-  for (int j = 0; j < side; ++j) {
-    for (int i = 0; i < side; ++i) {
-      const double a = (2 * (i + 0.5) / side - 1) * tan_half, b = (2 * (j + 0.5) / side - 1) * tan_half;
-      const Point3 d = normalise({forward[0] + a * right[0] + b * up[0], forward[1] + a * right[1] + b * up[1],
-                                  forward[2] + a * right[2] + b * up[2]});
-      // The ray's span in the box (slabs); a ray that misses the box is not traced.
-      double t = 0, t_exit = std::numeric_limits<double>::infinity();
-      for (std::size_t axis = 0; axis < 3; ++axis) {
-        if (d[axis] == 0) {
-          if (eye[axis] < box.lo[axis] || eye[axis] > box.hi[axis]) t = t_exit = 0;
-          continue;
-        }
-        const double t0 = (box.lo[axis] - eye[axis]) / d[axis], t1 = (box.hi[axis] - eye[axis]) / d[axis];
-        t = std::max(t, std::min(t0, t1));
-        t_exit = std::min(t_exit, std::max(t0, t1));
-      }
-      if (!(t < t_exit)) continue;
-      int steps = 0;
-      bool done = false, crossed = false;
-      float previous = 0;
-      while (steps < kMaxSteps) {
-        const float px = static_cast<float>(eye[0] + t * d[0]), py = static_cast<float>(eye[1] + t * d[1]),
-                    pz = static_cast<float>(eye[2] + t * d[2]);
-        const float v = sdf.template evaluate<float>(px, py, pz);
-        ++steps;
-        if (std::fabs(v) < kHitTolerance * h) {
-          ++stats.hits;
-          const Point3 p = {px, py, pz};
-          // The cloud distance is an upper bound: below the tolerance, no need to refine.
-          if (reference.cloud_distance(p) > kFarHitTolerance * h) {
-            const double distance = reference.distance(p);
-            if (distance > kFarHitTolerance * h) {
-              ++stats.far_hits;
-              stats.farthest_hit = std::max(stats.farthest_hit, distance / h);
-            }
-          }
-          done = true;
-          break;
-        }
-        crossed = crossed || (previous < 0 && v > 0) || (previous > 0 && v < 0);
-        previous = v;
-        t += std::fabs(v);
-        if (t > t_exit) {
-          done = true;
-          break;
-        }
-      }
-      if (!done) ++stats.stalled;
-      if (crossed) ++stats.crossed;
-      ++stats.rays;
-      total_steps += steps;
-      stats.max_steps = std::max(stats.max_steps, steps);
-    }
-  }
-  stats.mean_steps = total_steps / static_cast<double>(stats.rays);
-  return stats;
-}
-
-/// ns per fp32 evaluation at the sample points: the best of 5 batches, each
-/// repeating the points until it lasts at least 20 ms.
-template <typename Sdf>
-double time_evaluation(const Sdf& sdf, const std::vector<Point3>& points) {
-  std::vector<std::array<float, 3>> floats;
-  for (const Point3& p : points) {
-    floats.push_back({static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
-  }
-  using Clock = std::chrono::steady_clock;
-  double best = 1e300;
-  volatile float sink = 0;
-  for (int batch = 0; batch < 5; ++batch) {
-    std::size_t evaluations = 0;
-    float sum = 0;
-    const auto start = Clock::now();
-    double seconds = 0;
-    do {
-      for (const auto& p : floats) sum += sdf.template evaluate<float>(p[0], p[1], p[2]);
-      evaluations += floats.size();
-      seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    } while (seconds < 0.02);
-    sink = sink + sum;
-    best = std::min(best, seconds * 1e9 / static_cast<double>(evaluations));
-  }
-  return best;
-}
 
 /// One mode on one surface: the estimates at the sample points against their
 /// reference distances, the tracer, the timing.
@@ -289,8 +141,18 @@ ModeResult measure_mode(const std::string& mode, const Sdf& sdf, const Reference
         sdf.template evaluate<float>(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])));
   }
   result.estimates = testing::summarise_estimates(values, distances, reference.box().half_extent());
-  result.trace = trace_rays(sdf, reference, rays);
-  result.ns_per_evaluation = time_evaluation(sdf, points);
+  const testing::DistanceBox& box = reference.box();
+  const double h = box.half_extent();
+  const auto evaluate = [&sdf](float x, float y, float z) { return sdf.template evaluate<float>(x, y, z); };
+  result.trace = trace_rays(box.lo, box.hi, rays, evaluate, [&](const TracePoint& p) {
+    // The cloud distance is an upper bound: below the tolerance, no need to refine.
+    return reference.cloud_distance(p) > kFarHitTolerance * h ? reference.distance(p) : 0.0;
+  });
+  std::vector<std::array<float, 3>> floats;
+  for (const Point3& p : points) {
+    floats.push_back({static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
+  }
+  result.ns_per_evaluation = time_evaluation(evaluate, floats);
   return result;
 }
 
@@ -304,13 +166,6 @@ struct SurfaceResult {
   std::string denser;  ///< with --check-reference: the largest relative difference
   std::vector<ModeResult> modes;
 };
-
-/// `value` printed with a printf pattern.
-std::string format(const char* pattern, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, pattern, value);
-  return buffer;
-}
 
 /// "[lo, hi]³" for a cube, else the three intervals.
 std::string describe_box(const testing::DistanceBox& box) {
@@ -381,27 +236,6 @@ SurfaceResult measure_surface(const Surface& surface, const Config& config, unsi
 
 // ---------------------------------------------------------------- output
 
-/// Rows as a Markdown table (the first row the header) or aligned columns.
-void print_table(const std::vector<std::vector<std::string>>& rows, bool markdown) {
-  std::vector<std::size_t> widths;
-  for (const auto& row : rows) {
-    widths.resize(std::max(widths.size(), row.size()));
-    for (std::size_t i = 0; i < row.size(); ++i) widths[i] = std::max(widths[i], row[i].size());
-  }
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    std::string line = markdown ? "|" : "";
-    for (std::size_t i = 0; i < rows[r].size(); ++i) {
-      line += markdown ? " " + rows[r][i] + " |" : rows[r][i] + std::string(widths[i] - rows[r][i].size() + 2, ' ');
-    }
-    std::cout << line << '\n';
-    if (markdown && r == 0) {
-      std::string rule = "|";
-      for (std::size_t i = 0; i < rows[r].size(); ++i) rule += "---|";
-      std::cout << rule << '\n';
-    }
-  }
-}
-
 /// Measures the surfaces of the command line and prints both tables. Returns the
 /// exit status (file comment).
 int run(const Config& config) {
@@ -435,13 +269,6 @@ int run(const Config& config) {
   std::vector<std::vector<std::string>> table = {{"surface", "mode", "over D", "median |v|/D", "p5 |v|/D", "max |v|/D",
                                                   "steps mean", "steps max", "hits", "far hits", "crossed", "stalled",
                                                   "ns/eval"}};
-  if (config.markdown) {
-    for (std::string& cell : table[0]) {
-      for (std::size_t at = cell.find('|'); at != std::string::npos; at = cell.find('|', at + 2)) {
-        cell.replace(at, 1, "\\|");
-      }
-    }
-  }
   int status = 0;
   for (const SurfaceResult& r : results) {
     for (const ModeResult& m : r.modes) {
@@ -467,14 +294,6 @@ int run(const Config& config) {
 }  // namespace implicitizer::bench
 
 int main(int argc, char** argv) {
-  try {
-    return implicitizer::bench::run(implicitizer::bench::parse_config(argc, argv));
-  } catch (const implicitizer::InputError& e) {
-    std::cerr << "implicitizer-sdf-accuracy: " << e.field() << ": " << e.what() << "\n\n"
-              << implicitizer::bench::kUsage;
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "implicitizer-sdf-accuracy: " << e.what() << '\n';
-    return 1;
-  }
+  using namespace implicitizer::bench;
+  return run_bench("implicitizer-sdf-accuracy", kUsage, [&] { return run(parse_config(argc, argv)); });
 }

@@ -32,10 +32,14 @@ inline SceneBox axis_box(std::array<double, 3> lo, std::array<double, 3> hi) {
   return box;
 }
 
+// An implicit leaf drawn as the solid F <= 0 in its box: these tests measure the
+// marchers on solids (shape auto would make a sheet of every surface that touches
+// its box, as the torus of agreement_surfaces() does at (3, 0, 0)).
 inline SceneNode implicit_node(const std::string& equation) {
   SceneNode node;
   node.kind = NodeKind::implicit;
   node.leaf.equation = equation;
+  node.leaf.shape = SdfShape::solid;
   return node;
 }
 

@@ -22,6 +22,24 @@ std::vector<std::pair<Rational, Rational>> unit_square() {
   return {{Rational(0), Rational(1)}, {Rational(0), Rational(1)}};
 }
 
+SceneNode with_shape(SceneNode node, SdfShape shape) {
+  node.leaf.shape = shape;
+  return node;
+}
+
+CompiledScene compile_curve(const SceneNode& node, SdfMode mode = SdfMode::fast) {
+  SceneParams options;
+  options.mode = mode;
+  options.name = "c";
+  options.dimension = 2;
+  return compile_scene(node, options);
+}
+
+SceneNode parametric_curve(const std::string& x, const std::string& y,
+                           std::vector<std::pair<Rational, Rational>> domain = {}) {
+  return parametric(x, y, "", std::move(domain));
+}
+
 TEST(PolynomialLeaf, ImplicitSphereIsItsDistanceEstimate) {
   const CompiledScene scene = testing::compile(implicit("x^2+y^2+z^2-1"));
   EXPECT_EQ(scene.root_class(), NodeClass::estimate);
@@ -31,12 +49,18 @@ TEST(PolynomialLeaf, ImplicitSphereIsItsDistanceEstimate) {
   EXPECT_LT(scene.evaluate(V{0.2, 0.1, 0}), 0);
 }
 
-TEST(PolynomialLeaf, ParametricWithoutDomainIsTheWholeSignedSurface) {
-  // x = s, y = t, z = s·t: z − x·y = 0 (sign fixed by the implicit equation's
-  // normalisation), everywhere, also far outside [0, 1]².
+TEST(PolynomialLeaf, ParametricWithoutDomainIsTheWholeSurface) {
+  // x = s, y = t, z = s·t: z − x·y = 0, everywhere in the box, also far outside
+  // [0, 1]². It crosses the box's faces, so shape auto draws it as a sheet (>= 0 on
+  // both sides); asked for a solid, the two sides have opposite signs.
   const CompiledScene scene = testing::compile(parametric("s", "t", "s*t"));
+  EXPECT_EQ(scene.leaves().front().shape(), SdfShape::sheet);
   EXPECT_NEAR(scene.evaluate(V{1.5, -1, -1.5}), 0, 1e-12);
-  EXPECT_NE(scene.evaluate(V{0, 0, 0.5}) < 0, scene.evaluate(V{0, 0, -0.5}) < 0);
+  EXPECT_GT(scene.evaluate(V{0, 0, 0.5}), 0.4);
+  EXPECT_GT(scene.evaluate(V{0, 0, -0.5}), 0.4);
+  const CompiledScene solid = testing::compile(with_shape(parametric("s", "t", "s*t"), SdfShape::solid));
+  EXPECT_EQ(solid.leaves().front().shape(), SdfShape::solid);
+  EXPECT_NE(solid.evaluate(V{0, 0, 0.5}) < 0, solid.evaluate(V{0, 0, -0.5}) < 0);
 }
 
 TEST(PolynomialLeaf, PatchIsTrimmedToTheBoxOfItsDomain) {
@@ -141,6 +165,126 @@ TEST(PolynomialLeaf, ErrorsNameTheLeafField) {
   EXPECT_EQ(
       code_and_field(parametric("1/s", "t", "s*t", {{Rational(-1), Rational(1)}, {Rational(0), Rational(1)}})).first,
       "unbounded_patch");
+}
+
+// Shape auto (enclosure.hpp) on the box the value is clipped to: a sphere inside its
+// box is a solid, a plane and a saddle are sheets, 1 − |p|² is the solid of −F (its
+// inside is the ball, where F > 0). Shapes asked for are kept, with reason "asked".
+TEST(PolynomialLeaf, ShapeAutoIsDecidedOnTheBox) {
+  struct Case {
+    const char* equation;
+    SdfShape shape;
+    bool negated;
+  };
+  for (const Case& c : {Case{"x^2+y^2+z^2-1", SdfShape::solid, false}, Case{"x+y+z-1/2", SdfShape::sheet, false},
+                        Case{"z-x*y", SdfShape::sheet, false}, Case{"1-x^2-y^2-z^2", SdfShape::solid, true}}) {
+    for (const SdfMode mode : {SdfMode::fast, SdfMode::safe}) {
+      const CompiledScene scene = testing::compile(implicit(c.equation), mode);
+      const PolynomialLeaf& leaf = scene.leaves().front();
+      EXPECT_EQ(leaf.shape(), c.shape) << c.equation << ": " << leaf.shape_reason();
+      EXPECT_EQ(leaf.negated(), c.negated) << c.equation;
+      EXPECT_EQ(leaf.equation(), testing::parse_xyz(c.equation)) << c.equation;
+      // A solid is negative at the centre of its ball; a sheet never is.
+      const float centre = scene.evaluate(Vec3<float>{0.01f, 0.02f, 0.03f});
+      if (c.shape == SdfShape::solid) {
+        EXPECT_LT(centre, 0.0f) << c.equation;
+      } else {
+        for (const auto& p : testing::random_points(500, -3, 3, 11)) EXPECT_GE(scene.evaluate(p), 0.0f) << c.equation;
+      }
+    }
+  }
+  const CompiledScene sheet = testing::compile(with_shape(implicit("x^2+y^2+z^2-1"), SdfShape::sheet));
+  EXPECT_EQ(sheet.leaves().front().shape(), SdfShape::sheet);
+  EXPECT_EQ(sheet.leaves().front().shape_reason(), "asked");
+  EXPECT_GT(sheet.evaluate(V{0.5, 0, 0}), 0.3);  // |F/|∇F|| = 0.75/1 at |p| = 1/2
+  EXPECT_NEAR(sheet.evaluate(V{0, 1, 0}), 0, 1e-15);
+  // A solid asked of a patch is the untrimmed solid in the patch's box.
+  const CompiledScene patch = testing::compile(with_shape(parametric("s", "t", "s*t", unit_square()), SdfShape::solid));
+  EXPECT_FALSE(patch.leaves().front().trimmed());
+  EXPECT_LT(std::min(patch.evaluate(V{0.5, 0.5, 0.1}), patch.evaluate(V{0.5, 0.5, 0.4})), 0);
+  // Under auto a patch with a domain is the trimmed sheet.
+  const CompiledScene trimmed = testing::compile(parametric("s", "t", "s*t", unit_square()));
+  EXPECT_TRUE(trimmed.leaves().front().trimmed());
+  EXPECT_EQ(trimmed.leaves().front().shape(), SdfShape::sheet);
+}
+
+// Curves: dimension 2. The circle encloses a disc inside the default square (solid),
+// the parabola leaves it (sheet); the value at (x, y) is the planar one.
+TEST(PolynomialLeaf, PlaneCurvesAreEvaluatedAtZZero) {
+  for (const SdfMode mode : {SdfMode::fast, SdfMode::safe}) {
+    const CompiledScene circle = compile_curve(implicit("x^2+y^2-1"), mode);
+    EXPECT_EQ(circle.dimension(), 2);
+    EXPECT_EQ(circle.leaves().front().shape(), SdfShape::solid) << circle.leaves().front().shape_reason();
+    EXPECT_LT(circle.evaluate(V{0.1, 0.2, 0}), 0);
+    EXPECT_GT(circle.evaluate(V{1.5, 0, 0}), 0);
+    EXPECT_NEAR(circle.evaluate(V{0.6, 0.8, 0}), 0, 1e-12);
+    // The frame is the square's: z in [−2, 2].
+    EXPECT_EQ(circle.leaves().front().frame_box().lo[2], Rational(-2));
+    const CompiledScene parabola = compile_curve(implicit("y-x^2"), mode);
+    EXPECT_EQ(parabola.leaves().front().shape(), SdfShape::sheet);
+    EXPECT_GT(parabola.evaluate(V{0, 1, 0}), 0);
+    EXPECT_GT(parabola.evaluate(V{0, -1, 0}), 0);
+    EXPECT_NEAR(parabola.evaluate(V{1, 1, 0}), 0, 1e-12);
+  }
+  // Fast mode on the circle: (r² − 1)/(2r), the planar estimate.
+  EXPECT_NEAR(compile_curve(implicit("x^2+y^2-1")).evaluate(V{1.5, 0, 0}), 1.25 / 3, 1e-12);
+  // The rational circle without a domain is the whole circle: a solid; the arc of
+  // t in [0, 1] (from (1, 0) to (0, 1)) is a trimmed sheet, > 0 at (−1, 0).
+  const CompiledScene whole = compile_curve(parametric_curve("(1-t^2)/(1+t^2)", "2*t/(1+t^2)"));
+  EXPECT_EQ(whole.leaves().front().shape(), SdfShape::solid);
+  EXPECT_LT(whole.evaluate(V{0, 0, 0}), 0);
+  const CompiledScene arc =
+      compile_curve(parametric_curve("(1-t^2)/(1+t^2)", "2*t/(1+t^2)", {{Rational(0), Rational(1)}}));
+  EXPECT_EQ(arc.leaves().front().shape(), SdfShape::sheet);
+  EXPECT_NEAR(arc.evaluate(V{1, 0, 0}), 0, 1e-9);
+  EXPECT_NEAR(arc.evaluate(V{0.6, 0.8, 0}), 0, 1e-9);
+  EXPECT_GT(arc.evaluate(V{-1, 0, 0}), 0.9);
+  EXPECT_GT(arc.evaluate(V{0, -1, 0}), 0.9);
+}
+
+TEST(PolynomialLeaf, CurveGlslTakesAVec2AndRunsOnLlvmpipe) {
+  const std::vector<std::pair<const char*, SceneNode>> curves = {
+      {"circle", implicit("x^2+y^2-1")},
+      {"parabola", implicit("y-x^2")},
+      {"arc", parametric_curve("(1-t^2)/(1+t^2)", "2*t/(1+t^2)", {{Rational(0), Rational(1)}})}};
+  for (const auto& [label, node] : curves) {
+    for (const SdfMode mode : {SdfMode::fast, SdfMode::safe}) {
+      const CompiledScene scene = compile_curve(node, mode);
+      EXPECT_NE(scene.to_glsl().find("float c_sdf(vec2 p) {\n  return c_space(vec3(p, 0.0));\n}"), std::string::npos)
+          << scene.to_glsl();
+      EXPECT_EQ(testing::glslang_both(scene), "") << label;
+      const std::string reason = testing::GlesRunner::instance().unavailable();
+      if (!reason.empty()) continue;
+      std::vector<Vec3<float>> points = testing::random_points(300, -2.5f, 2.5f, 3);
+      for (auto& p : points) p.z = 0;
+      const testing::GpuComparison r = testing::compare_on_gpu(scene, points, {});
+      ASSERT_EQ(r.error, "") << label;
+      EXPECT_LE(r.worst_scaled, 64) << label;
+      std::cout << label << (mode == SdfMode::safe ? " (safe)" : "") << ": " << r.points << " points, " << r.identical
+                << " bit-identical, worst " << r.worst_scaled << " x 2^-24 x scale\n";
+    }
+  }
+}
+
+TEST(PolynomialLeaf, CurveErrorsNameTheField) {
+  const auto code_and_field = [](const SceneNode& node, int dimension) -> std::pair<std::string, std::string> {
+    try {
+      SceneParams options;
+      options.dimension = dimension;
+      compile_scene(node, options);
+    } catch (const InputError& e) {
+      return {e.code(), e.field()};
+    }
+    return {"", ""};
+  };
+  EXPECT_EQ(code_and_field(implicit("x^2+y^2+z^2-1"), 2),
+            std::make_pair(std::string("unknown_variable"), std::string("scene.equation")));
+  EXPECT_EQ(code_and_field(parametric("s", "s^2", "s^3"), 2),
+            std::make_pair(std::string("invalid_value"), std::string("scene.z")));
+  EXPECT_EQ(code_and_field(implicit("x^2+y^2-1"), 4),
+            std::make_pair(std::string("invalid_value"), std::string("dimension")));
+  // A parametric curve whose image is a point has no equation.
+  EXPECT_EQ(code_and_field(parametric_curve("1", "2"), 2).first, "no_single_equation");
 }
 
 }  // namespace

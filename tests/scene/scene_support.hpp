@@ -55,10 +55,19 @@ inline CompiledScene compile(const SceneNode& root, SdfMode mode = SdfMode::fast
   return compile_scene(root, options);
 }
 
-// "" when the scene's GLSL compiles with glslangValidator as GLSL ES 3.00 and as 330.
+// The call of the scene's NAME_sdf at a vec3 expression `p`: a plane curve's takes
+// the vec2 p.xy (it evaluates at z = 0).
+inline std::string sdf_call(const CompiledScene& scene, const std::string& p) {
+  return scene.function_name() + (scene.dimension() == 2 ? "(" + p + ".xy)" : "(" + p + ")");
+}
+
+// "" when the scene's GLSL compiles with glslangValidator as GLSL ES 3.00 and as 330
+// (a curve's through a vec3 wrapper that calls its vec2 NAME_sdf).
 inline std::string glslang_both(const CompiledScene& scene) {
+  const std::string text =
+      scene.to_glsl() + "float glslang_check(vec3 p) {\n  return " + sdf_call(scene, "p") + ";\n}\n";
   for (const char* header : {"#version 300 es\nprecision highp float;", "#version 330"}) {
-    const std::string errors = glslang_errors(header, scene.to_glsl(), scene.function_name());
+    const std::string errors = glslang_errors(header, text, "glslang_check");
     if (!errors.empty()) return std::string(header) + ": " + errors + "\n" + scene.to_glsl();
   }
   return "";
@@ -88,7 +97,7 @@ inline std::string gpu_source(const CompiledScene& scene, const UniformValues& v
                            : x + " + zero") +
                    ";\n";
   }
-  return text + "float run(vec3 p) {\n" + assignments + "  return " + scene.function_name() + "(p);\n}\n";
+  return text + "float run(vec3 p) {\n" + assignments + "  return " + sdf_call(scene, "p") + ";\n}\n";
 }
 
 // Points uniform in [lo, hi]^3 (fixed seed).

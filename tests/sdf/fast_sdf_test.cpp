@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <stdexcept>
 
 #include "sdf/sdf_support.hpp"
 
@@ -22,10 +23,10 @@ struct Point {
 };
 
 // Compares the C++ float run of the GLSL's steps with exact F/|∇F| at every point,
-// clipped to the box as the function clips it (max with the signed box distance): |float - exact| <= relative·|exact| + absolute·h, h the box's half
-// extent. Returns the largest relative error seen, |float - exact| / max(|exact|, h·1e-3).
-double check_against_exact(const Polynomial& f, const FastSdf& sdf, const std::vector<Point>& points,
-                           double relative, double absolute) {
+// clipped to the box as the function clips it (max with the signed box distance): |float - exact| <= relative·|exact| +
+// absolute·h, h the box's half extent. Returns the largest relative error seen, |float - exact| / max(|exact|, h·1e-3).
+double check_against_exact(const Polynomial& f, const FastSdf& sdf, const std::vector<Point>& points, double relative,
+                           double absolute) {
   const double s = to_mpq(sdf.frame().scale).get_d();
   const double h = 1 / s;
   double worst = 0;
@@ -50,8 +51,7 @@ double check_against_exact(const Polynomial& f, const FastSdf& sdf, const std::v
 }
 
 // Points on spheres of radius r·(1 ± offsets) around `centre`, in random directions.
-std::vector<Point> around_sphere(const double centre[3], double r, const std::vector<double>& offsets,
-                                 unsigned seed) {
+std::vector<Point> around_sphere(const double centre[3], double r, const std::vector<double>& offsets, unsigned seed) {
   std::mt19937 random(seed);
   std::normal_distribution<double> normal;
   std::vector<Point> points;
@@ -80,8 +80,8 @@ TEST(FastSdf, SphereWithCoefficient1e30) {
   const Polynomial f = parse_xyz("10^30*(x^2+y^2+z^2-1)");
   const FastSdf sdf = FastSdf::build(f, SceneBox::default_box());
   const double centre[3] = {0, 0, 0};
-  const double worst = check_against_exact(f, sdf, around_sphere(centre, 1, kOffsets, 1), kSphereRelative,
-                                           kSphereAbsolute);
+  const double worst =
+      check_against_exact(f, sdf, around_sphere(centre, 1, kOffsets, 1), kSphereRelative, kSphereAbsolute);
   std::cout << "coefficient 1e30, unit sphere: worst relative error " << worst << '\n';
 }
 
@@ -89,8 +89,8 @@ TEST(FastSdf, SphereOfRadius1e12FarFromTheOriginWithCoefficient1e30) {
   const Polynomial f = parse_xyz("10^30*((x-5*10^12)^2+(y+3*10^12)^2+z^2-10^24)");
   const FastSdf sdf = FastSdf::build(f, box_of("4e12", "-4e12", "-1e12", "6e12", "-2e12", "1e12"));
   const double centre[3] = {5e12, -3e12, 0};
-  const double worst = check_against_exact(f, sdf, around_sphere(centre, 1e12, kOffsets, 2), kSphereRelative,
-                                           kSphereAbsolute);
+  const double worst =
+      check_against_exact(f, sdf, around_sphere(centre, 1e12, kOffsets, 2), kSphereRelative, kSphereAbsolute);
   std::cout << "box 1e12 at 5e12, coefficient 1e30: worst relative error " << worst << '\n';
 }
 
@@ -99,8 +99,8 @@ TEST(FastSdf, SphereOfRadius1e6WithCoefficient1e30Minus) {
   const FastSdf sdf =
       FastSdf::build(f, box_of("0.999e-3", "1.999e-3", "-1.001e-3", "1.001e-3", "2.001e-3", "-0.999e-3"));
   const double centre[3] = {1e-3, 2e-3, -1e-3};
-  const double worst = check_against_exact(f, sdf, around_sphere(centre, 1e-6, kOffsets, 3), kSphereRelative,
-                                           kSphereAbsolute);
+  const double worst =
+      check_against_exact(f, sdf, around_sphere(centre, 1e-6, kOffsets, 3), kSphereRelative, kSphereAbsolute);
   std::cout << "box 1e-6 at 1e-3, coefficient 1e-30: worst relative error " << worst << '\n';
 }
 
@@ -113,8 +113,10 @@ TEST(FastSdf, SignIsRightJustInsideAndOutsideAtTheExtremes) {
     double centre[3], r;
   };
   const Case cases[] = {
-      {"10^30*((x-5*10^12)^2+y^2+z^2-10^24)", box_of("4e12", "-1e12", "-1e12", "6e12", "1e12", "1e12"),
-       {5e12, 0, 0}, 1e12},
+      {"10^30*((x-5*10^12)^2+y^2+z^2-10^24)",
+       box_of("4e12", "-1e12", "-1e12", "6e12", "1e12", "1e12"),
+       {5e12, 0, 0},
+       1e12},
       {"(x-5*10^12)^2+y^2+z^2-10^24", box_of("4e12", "-1e12", "-1e12", "6e12", "1e12", "1e12"), {5e12, 0, 0}, 1e12},
       {"1e-30*(x^2+y^2+z^2-1e-12)", box_of("-1e-6", "-1e-6", "-1e-6", "1e-6", "1e-6", "1e-6"), {0, 0, 0}, 1e-6},
   };
@@ -194,6 +196,43 @@ TEST(FastSdf, SingularPointGivesAFiniteValue) {
   const FastSdf sdf = FastSdf::build(parse_xyz("x^2+y^2-z^2"), SceneBox::default_box());
   EXPECT_EQ(sdf.evaluate<float>(0, 0, 0), 0.0f);
   EXPECT_TRUE(std::isfinite(sdf.evaluate<float>(1e-30f, 0, 0)));
+}
+
+// A sheet is max(|estimate|, signed box distance): the plane x + 2y − 2z = 1 (whose
+// estimate is its exact distance (x + 2y − 2z − 1)/3) gives |that| inside the box and
+// the box distance outside; >= 0 everywhere, 0 on the plane, no cap. The solid of the
+// same plane is negative on one side.
+TEST(FastSdf, SheetIsTheAbsoluteEstimateClippedToTheBox) {
+  const Polynomial f = parse_xyz("x+2*y-2*z-1");
+  const FastSdf sheet = FastSdf::build(f, SceneBox::default_box(), Budget(), SdfShape::sheet);
+  const FastSdf solid = FastSdf::build(f, SceneBox::default_box());
+  EXPECT_EQ(sheet.shape(), SdfShape::sheet);
+  EXPECT_EQ(solid.shape(), SdfShape::solid);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> coordinate(-6, 6);
+  int negative_solid = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const double x = coordinate(random), y = coordinate(random), z = coordinate(random);
+    const double plane = (x + 2 * y - 2 * z - 1) / 3;
+    const double box = testing::signed_box_distance(sheet.frame(), x, y, z);
+    const double value = sheet.evaluate<double>(x, y, z);
+    EXPECT_GE(value, 0.0) << x << ", " << y << ", " << z;
+    EXPECT_GE(sheet.evaluate<float>(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)), 0.0f);
+    // Beyond the far field (|u_i| > 2) the value is the box distance alone.
+    const double expected =
+        std::max(std::fabs(x), std::max(std::fabs(y), std::fabs(z))) > 4 ? box : std::max(std::fabs(plane), box);
+    EXPECT_NEAR(value, expected, 1e-12) << x << ", " << y << ", " << z;
+    if (solid.evaluate<double>(x, y, z) < 0) ++negative_solid;
+  }
+  EXPECT_GT(negative_solid, 10);
+  // On the plane inside the box: 0 (exact points of it).
+  EXPECT_EQ(sheet.evaluate<float>(1, 0, 0), 0.0f);
+  EXPECT_EQ(sheet.evaluate<double>(1, 1, 1), 0.0);
+  // Its GLSL takes the absolute value; the solid's does not.
+  EXPECT_NE(sheet.to_glsl("plane_sdf").find("return max(abs(d), box);"), std::string::npos);
+  EXPECT_EQ(solid.to_glsl("plane_sdf").find("abs(d)"), std::string::npos);
+  // automatic is decided before building (enclosure.hpp), not here.
+  EXPECT_THROW((void)FastSdf::build(f, SceneBox::default_box(), Budget(), SdfShape::automatic), std::invalid_argument);
 }
 
 }  // namespace

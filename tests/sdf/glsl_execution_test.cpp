@@ -58,6 +58,7 @@ struct Case {
   // Mode safe: the exact distance to the zero set (spheres: from centre and r when
   // null); null and r = 0: checked against exact signs instead.
   std::function<long double(long double, long double, long double)> distance = nullptr;
+  SdfShape shape = SdfShape::solid;  // sheet: the same checks, plus value >= 0 and no sign
 };
 
 struct Comparison {
@@ -98,11 +99,13 @@ std::vector<float> sample_points(const Case& c) {
 Comparison run_case(const Case& c) {
   const Polynomial f = parse_xyz(c.f);
   const SceneBox box = box_of(c.box[0], c.box[1], c.box[2], c.box[3], c.box[4], c.box[5]);
-  const FastSdf sdf = FastSdf::build(f, box);
+  const FastSdf sdf = FastSdf::build(f, box, Budget(), c.shape);
   const std::string function = std::string(c.name) + "_sdf";
-  // The text the user gets (sdf_glsl) is the text that runs.
-  const std::string glsl = sdf_glsl(f, SdfParams{SdfMode::fast, box, c.name});
-  EXPECT_EQ(glsl, sdf.to_glsl(function));
+  // The text the user gets (sdf_glsl, solids) is the text that runs.
+  const std::string glsl = sdf.to_glsl(function);
+  if (c.shape == SdfShape::solid) {
+    EXPECT_EQ(glsl, sdf_glsl(f, SdfParams{SdfMode::fast, box, c.name}));
+  }
   const std::vector<float> xyz = sample_points(c);
 
   std::string error;
@@ -139,6 +142,9 @@ Comparison run_case(const Case& c) {
                          8 * eps * std::fabs(cpu);
     const double difference = std::fabs(static_cast<double>(gpu[i]) - cpu);
     EXPECT_TRUE(std::isfinite(gpu[i])) << c.name << " at (" << x << ", " << y << ", " << z << ")";
+    if (c.shape == SdfShape::sheet) {
+      EXPECT_GE(gpu[i], 0.0f) << c.name << " at (" << x << ", " << y << ", " << z << ")";
+    }
     EXPECT_LE(difference, bound) << c.name << " at (" << x << ", " << y << ", " << z << "): gpu " << gpu[i] << ", cpu "
                                  << cpu;
     if (std::fabs(cpu) > bound) {
@@ -166,10 +172,12 @@ int exact_sign(const Polynomial& f, float x, float y, float z) {
 void run_safe_case(const Case& c) {
   const Polynomial f = parse_xyz(c.f);
   const SceneBox box = box_of(c.box[0], c.box[1], c.box[2], c.box[3], c.box[4], c.box[5]);
-  const SafeSdf sdf = SafeSdf::build(f, box);
+  const SafeSdf sdf = SafeSdf::build(f, box, Budget(), c.shape);
   const std::string function = std::string(c.name) + "_sdf";
-  const std::string glsl = sdf_glsl(f, SdfParams{SdfMode::safe, box, c.name});
-  EXPECT_EQ(glsl, sdf.to_glsl(function));
+  const std::string glsl = sdf.to_glsl(function);
+  if (c.shape == SdfShape::solid) {
+    EXPECT_EQ(glsl, sdf_glsl(f, SdfParams{SdfMode::safe, box, c.name}));
+  }
   const std::vector<float> xyz = sample_points(c);
   std::string error;
   const std::vector<float> gpu = GlesRunner::instance().evaluate(glsl, function, xyz, error);
@@ -186,8 +194,12 @@ void run_safe_case(const Case& c) {
     const std::string where = std::string(c.name) + " at (" + std::to_string(x) + ", " + std::to_string(y) + ", " +
                               std::to_string(z) + "): gpu " + std::to_string(gpu[i]) + ", cpu " + std::to_string(cpu);
     ASSERT_TRUE(std::isfinite(gpu[i])) << where;
+    if (c.shape == SdfShape::sheet) {
+      EXPECT_GE(gpu[i], 0.0f) << where;
+    }
     if (gpu[i] == cpu) ++identical;
-    if (cpu != 0) worst_relative = std::max(worst_relative, std::fabs(static_cast<double>(gpu[i]) - cpu) / std::fabs(cpu));
+    if (cpu != 0)
+      worst_relative = std::max(worst_relative, std::fabs(static_cast<double>(gpu[i]) - cpu) / std::fabs(cpu));
     if (gpu[i] == 0) continue;
     ++nonzero;
     // The guarantee, for the GPU's value.
@@ -215,15 +227,16 @@ void run_safe_case(const Case& c) {
         }
       }
     }
-    const float m = std::max(std::fabs((x - centre[0]) * s), std::max(std::fabs((y - centre[1]) * s),
-                                                                      std::fabs((z - centre[2]) * s)));
-    if (m <= SafeSdf::kFarField) {
+    const float m = std::max(std::fabs((x - centre[0]) * s),
+                             std::max(std::fabs((y - centre[1]) * s), std::fabs((z - centre[2]) * s)));
+    if (m <= SafeSdf::kFarField && c.shape == SdfShape::solid) {
       ++sign_checked;
       EXPECT_EQ(gpu[i] < 0 ? -1 : 1, sign) << where;
     }
   }
-  std::cout << c.name << " (safe): " << gpu.size() << " points, " << identical << " bit-identical to the C++ float run; "
-            << nonzero << " nonzero (" << sign_checked << " signs checked); worst |gpu - cpu|/|cpu| " << worst_relative;
+  std::cout << c.name << " (safe): " << gpu.size() << " points, " << identical
+            << " bit-identical to the C++ float run; " << nonzero << " nonzero (" << sign_checked
+            << " signs checked); worst |gpu - cpu|/|cpu| " << worst_relative;
   if (worst_of_distance > 0) std::cout << ", worst |gpu|/distance " << worst_of_distance;
   std::cout << '\n';
   EXPECT_GT(nonzero, static_cast<int>(gpu.size()) / 2);
@@ -249,12 +262,14 @@ void run_or_skip(const Case& c) {
 // ((x²+y²+z²+R²−r²)² − 4R²(x²+y²)), Steiner's surface, and the extremes of
 // docs/sdf.md §4 (coefficients 1e30 and 1e-30, a radius of 1e12 far from the origin,
 // a radius of 1e-6).
-const Case kSphere = {
-    "sphere", "x^2+y^2+z^2-1", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2}, {2, 2, 2}, {0, 0, 0}, 1};
-const Case kTorus = {"torus", "(x^2+y^2+z^2+3)^2-16*(x^2+y^2)", {"-3", "-3", "-1", "3", "3", "1"}, {-3, -3, -1},
-                     {3, 3, 1}, {0, 0, 0}, 0};
-const Case kSteiner = {"steiner", "x^2*y^2+y^2*z^2+z^2*x^2-x*y*z", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2},
-                       {2, 2, 2}, {0, 0, 0}, 0};
+const Case kSphere = {"sphere", "x^2+y^2+z^2-1", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2}, {2, 2, 2}, {0, 0, 0},
+                      1};
+const Case kTorus = {
+    "torus", "(x^2+y^2+z^2+3)^2-16*(x^2+y^2)", {"-3", "-3", "-1", "3", "3", "1"}, {-3, -3, -1}, {3, 3, 1}, {0, 0, 0},
+    0};
+const Case kSteiner = {
+    "steiner", "x^2*y^2+y^2*z^2+z^2*x^2-x*y*z", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2}, {2, 2, 2}, {0, 0, 0},
+    0};
 const Case kBigSphere = {
     "big", "10^30*(x^2+y^2+z^2-1)", {"-2", "-2", "-2", "2", "2", "2"}, {-2, -2, -2}, {2, 2, 2}, {0, 0, 0}, 1};
 const Case kFarSphere = {"far",
@@ -294,6 +309,18 @@ TEST(GlslExecution, SafeSteinerSurfaceOnLlvmpipeKeepsExactSigns) { run_safe_or_s
 TEST(GlslExecution, SafeSphereWithCoefficient1e30OnLlvmpipe) { run_safe_or_skip(kBigSphere); }
 TEST(GlslExecution, SafeSphereOfRadius1e12FarFromTheOriginOnLlvmpipe) { run_safe_or_skip(kFarSphere); }
 TEST(GlslExecution, SafeSphereOfRadius1e6WithCoefficient1e30MinusOnLlvmpipe) { run_safe_or_skip(kTinySphere); }
+
+// Sheets (sdf_shape.hpp): the same comparisons in fast mode, the same guarantee in
+// safe mode (|value| at most the distance: the sphere's closed form, Steiner's exact
+// signs), and every GPU value >= 0.
+Case sheet_of(Case c) {
+  c.shape = SdfShape::sheet;
+  return c;
+}
+TEST(GlslExecution, SphereSheetOnLlvmpipeAgreesWithTheFloatEvaluator) { run_or_skip(sheet_of(kSphere)); }
+TEST(GlslExecution, SteinerSheetOnLlvmpipeAgreesWithTheFloatEvaluator) { run_or_skip(sheet_of(kSteiner)); }
+TEST(GlslExecution, SafeSphereSheetOnLlvmpipeNeverExceedsTheDistance) { run_safe_or_skip(sheet_of(kSphere)); }
+TEST(GlslExecution, SafeSteinerSheetOnLlvmpipeKeepsExactSigns) { run_safe_or_skip(sheet_of(kSteiner)); }
 
 }  // namespace
 }  // namespace implicitizer

@@ -6,12 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <map>
 #include <random>
 #include <string>
 
+#include "implicitizer/sdf/enclosure.hpp"
 #include "implicitizer/sdf/fast_sdf.hpp"
 #include "implicitizer/sdf/safe_sdf.hpp"
 #include "sdf/sdf_support.hpp"
@@ -226,6 +228,60 @@ TEST(SafeSdfAccuracy, NeverExceedsTheReferenceOnThePublicSurfaces) {
     EXPECT_EQ(stats.points, 400u) << s.name;
     std::cout << s.name << ": safe over " << stats.over << "/" << stats.points << ", median |v|/D "
               << stats.median_ratio << ", 5th percentile " << stats.p5_ratio << ", max " << stats.max_ratio << '\n';
+  }
+}
+
+// Sheets (shape sheet): at the same points, the safe sheet is >= 0, at least the
+// magnitude of the safe solid (it takes the radius where the solid takes the smaller
+// of the radius and the distance to the faces), and never above the reference
+// distance; the fast sheet is >= 0 and the magnitude of the fast solid wherever F >= 0
+// or the point is outside the box.
+TEST(SafeSdfAccuracy, SheetsAreNonNegativeLowerBoundsOnThePublicSurfaces) {
+  for (const PublicSurface& s : public_surfaces()) {
+    const SceneBox box = testing::public_surface_box(s.name);
+    const ReferenceDistance reference = ReferenceDistance::build(s.implicit, &s.parametrization, box);
+    const SafeSdf solid = SafeSdf::build(s.implicit, box);
+    const SafeSdf sheet = SafeSdf::build(s.implicit, box, Budget(), SdfShape::sheet);
+    const FastSdf fast = FastSdf::build(s.implicit, box, Budget(), SdfShape::sheet);
+    const double h = reference.box().half_extent();
+    std::size_t positive = 0, points = 0;
+    for (const Point3& p : testing::accuracy_samples(reference, 200, 29)) {
+      const float x = static_cast<float>(p[0]), y = static_cast<float>(p[1]), z = static_cast<float>(p[2]);
+      const float value = sheet.evaluate<float>(x, y, z);
+      const std::string where =
+          s.name + " at (" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " + std::to_string(p[2]) + ")";
+      EXPECT_GE(value, 0.0f) << where;
+      EXPECT_GE(value, std::fabs(solid.evaluate<float>(x, y, z))) << where;
+      EXPECT_LE(value, reference.distance(p) * (1 + testing::EstimateStatistics::kOverRelative) +
+                           testing::EstimateStatistics::kOverAbsolute * h)
+          << where;
+      EXPECT_GE(fast.evaluate<float>(x, y, z), 0.0f) << where;
+      if (value > 0) ++positive;
+      ++points;
+    }
+    EXPECT_GT(positive, points / 2) << s.name;
+  }
+}
+
+// Shape auto on the twelve public surfaces in their boxes (public_surface_box): only
+// the closed ones inside their boxes (the sphere, the torus) are solids; every open
+// surface, and Steiner's surface (its axes reach the faces of [−1, 1]³), is a sheet.
+// Prints how long each decision takes (docs/sdf.md, "Shapes").
+TEST(SdfShapes, AutoOnThePublicSurfaces) {
+  for (const PublicSurface& s : public_surfaces()) {
+    const SceneBox box = testing::public_surface_box(s.name);
+    const SceneFrame frame = make_scene_frame(box);
+    std::vector<std::pair<Rational, Rational>> cube;
+    for (std::size_t i = 0; i < 3; ++i) {
+      cube.emplace_back(frame.centre[i] - Rational(1) / frame.scale, frame.centre[i] + Rational(1) / frame.scale);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const Enclosure e = decide_enclosure(s.implicit, cube);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const bool closed = s.name == "unit_sphere" || s.name == "torus_R2_r1";
+    EXPECT_EQ(e.shape, closed ? SdfShape::solid : SdfShape::sheet) << s.name << ": " << e.reason;
+    std::cout << s.name << " (degree " << s.implicit.total_degree() << "): " << to_string(e.shape) << " in " << ms
+              << " ms: " << e.reason << '\n';
   }
 }
 

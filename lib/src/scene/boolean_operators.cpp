@@ -75,6 +75,22 @@ void classify_smooth(NodeCompilation& c) {
   }
 }
 
+// max(a, −b) uses b's claim inside b (where −b > 0): an outer bound has none, so safe
+// mode refuses one as a subtrahend. The minuend and the result keep the weakest class.
+void classify_difference(NodeCompilation& c) {
+  c.out.node_class = c.children_class();
+  if (!c.safe()) return;
+  for (std::size_t i = 1; i < c.out.children.size(); ++i) {
+    if (c.child(i).node_class == NodeClass::outer_bound) {
+      throw InputError("unsafe_operator",
+                       "in mode safe a difference cannot subtract " + child_field(c.path, NodeArity::nary, i) +
+                           ": it is only bounded outside (a shell over a polynomial leaf or another mere bound), "
+                           "and the difference needs its distance inside")
+          .in_field(child_field(c.path, NodeArity::nary, i));
+    }
+  }
+}
+
 // {min ≤ 0} is the union of the solids: the hull of the children's boxes, growing
 // where every child grows.
 NodeBox bound_union(const NodeCompilation& c) {
@@ -186,7 +202,7 @@ const NodeOperations kUnionOperations = {classify_as_children, bound_union, eval
                                          evaluate_union<double>, emit_union};
 const NodeOperations kIntersectionOperations = {classify_as_children, bound_intersection, evaluate_intersection<float>,
                                                 evaluate_intersection<double>, emit_intersection};
-const NodeOperations kDifferenceOperations = {classify_as_children, bound_difference, evaluate_difference<float>,
+const NodeOperations kDifferenceOperations = {classify_difference, bound_difference, evaluate_difference<float>,
                                               evaluate_difference<double>, emit_difference};
 const NodeOperations kSmoothUnionOperations = {classify_smooth, bound_smooth_union, evaluate_smooth_union<float>,
                                                evaluate_smooth_union<double>, emit_smooth_union};

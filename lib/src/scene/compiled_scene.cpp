@@ -26,6 +26,7 @@ class SceneCompiler {
   SceneCompiler(const SceneParams& options, const Budget& budget) : options_(options), budget_(budget) {
     scene_.name_ = options.name;
     scene_.mode_ = options.mode;
+    scene_.dimension_ = options.dimension;
   }
 
   CompiledScene run(const SceneNode& root);
@@ -257,7 +258,8 @@ std::uint32_t SceneCompiler::compile(const SceneNode& node, const std::string& p
   }
   if (node.kind == NodeKind::implicit || node.kind == NodeKind::parametric) {
     out.leaf = static_cast<std::int32_t>(scene_.leaves_.size());
-    scene_.leaves_.push_back(PolynomialLeaf::build(node.kind, node.leaf, options_.box, options_.mode, budget_, path));
+    scene_.leaves_.push_back(
+        PolynomialLeaf::build(node.kind, node.leaf, options_.box, options_.mode, budget_, path, options_.dimension));
   }
   NodeCompilation compilation{out, path, options_.mode, scene_.nodes_, scene_.leaves_};
   info.operations->classify(compilation);
@@ -352,7 +354,15 @@ std::string SceneGlslWriter::write(std::set<std::string>& globals) {
     out += std::string("uniform ") + (u.type == ParameterType::vec3 ? "vec3 " : "float ") + u.name + ";\n";
   }
   out += helpers_;
-  out += "float " + function + "(vec3 p) {\n" + body_ + "  return " + result + ";\n}\n";
+  if (scene_.dimension_ == 2) {
+    // A plane curve: the slice z = 0 of the scene in space.
+    const std::string space = scene_.name_ + "_space";
+    globals_.insert(space);
+    out += "float " + space + "(vec3 p) {\n" + body_ + "  return " + result + ";\n}\n";
+    out += "float " + function + "(vec2 p) {\n  return " + space + "(vec3(p, 0.0));\n}\n";
+  } else {
+    out += "float " + function + "(vec3 p) {\n" + body_ + "  return " + result + ";\n}\n";
+  }
   globals = globals_;
   return out;
 }
@@ -362,6 +372,9 @@ CompiledScene SceneCompiler::run(const SceneNode& root) {
     check_glsl_name(options_.name);
   } catch (const InputError& e) {
     throw e.in_field("name");
+  }
+  if (options_.dimension != 2 && options_.dimension != 3) {
+    throw InputError("invalid_value", "dimension is 2 (a plane curve) or 3 (space)").in_field("dimension");
   }
   scene_.root_ = compile(root, options_.root_field, 1);
   std::set<std::string> globals;

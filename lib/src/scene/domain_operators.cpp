@@ -220,7 +220,7 @@ using V = Vec3<double>;
 // Twist and bend. Safe: the child's value over the local Lipschitz constant of the
 // warp, a bound (not 1-Lipschitz); fast: the child at the warped point, which can
 // overshoot by that constant.
-void classify_warp(NodeCompilation& c) { c.out.node_class = c.safe() ? NodeClass::bound : NodeClass::estimate; }
+void classify_warp(NodeCompilation& c) { c.out.node_class = bound_or_weaker(c); }
 
 // The warp keeps the coordinate along its axis (twist: y, bend: z) and the distance ρ
 // to that axis: the solid lies within the largest ρ of the child's box, for any k.
@@ -293,12 +293,6 @@ void classify_round(NodeCompilation& c) { classify_offset(c, "round"); }
 template <typename T>
 T evaluate_round(const SceneEvaluator<T>& e, const CompiledNode& n, const Vec3<T>& p) {
   return round_value(e.child(n, 0, p), e.slots(n).scalar(0));
-}
-// f ≤ r only within r of the child's box when f grows; f − r then grows too.
-NodeBox bound_round(const NodeCompilation& c) {
-  if (!c.child(0).box_grows || c.uniform({0})) return {};
-  const double r = c.value(0).x;
-  return {c.child(0).box_lo - cube_corner(r), c.child(0).box_hi + cube_corner(r), true};
 }
 std::string emit_round(SceneGlslWriter& w, const CompiledNode& n, const std::string& p) {
   w.require_helper("round", round_glsl(w.prefix()));
@@ -421,7 +415,7 @@ void classify_repetition(NodeCompilation& c, bool finite) {
     check_repetition_box(stated(child.box_lo, child.box_lo_float), stated(child.box_hi, child.box_hi_float), period,
                          axes_of(period), c.path + ".child");
   }
-  c.out.node_class = c.safe() ? NodeClass::bound : NodeClass::estimate;
+  c.out.node_class = bound_or_weaker(c);
 }
 
 template <typename T>
@@ -505,8 +499,8 @@ const NodeOperations kTwistOperations = {classify_warp, bound_twist, evaluate_tw
                                          emit_twist};
 const NodeOperations kBendOperations = {classify_warp, bound_bend, evaluate_bend<float>, evaluate_bend<double>,
                                         emit_bend};
-const NodeOperations kRoundOperations = {classify_round, bound_round, evaluate_round<float>, evaluate_round<double>,
-                                         emit_round};
+const NodeOperations kRoundOperations = {classify_round, offset_child_box, evaluate_round<float>,
+                                         evaluate_round<double>, emit_round};
 const NodeOperations kElongateOperations = {classify_elongate, bound_elongate, evaluate_elongate<float>,
                                             evaluate_elongate<double>, emit_elongate};
 const NodeOperations kSymmetryOperations = {classify_symmetry, bound_symmetry, evaluate_symmetry<float>,

@@ -54,8 +54,9 @@ struct NodeCompilation {
 
   bool safe() const { return mode == SdfMode::safe; }
   const CompiledNode& child(std::size_t i) const { return nodes[out.children[i]]; }
-  /// The weakest class of the children: min, max and negation keep 1-Lipschitz
-  /// functions 1-Lipschitz and bounds bounds (docs/sdf.md, "Scenes", safe mode).
+  /// The weakest class of the children (the enum's order): min, max and negation keep
+  /// 1-Lipschitz functions 1-Lipschitz and bounds bounds, min and max keep outer
+  /// bounds outer bounds (docs/sdf.md, "Scenes", safe mode).
   NodeClass children_class() const {
     NodeClass weakest = NodeClass::lipschitz;
     for (std::uint32_t c : out.children) weakest = std::max(weakest, nodes[c].node_class);
@@ -93,6 +94,16 @@ inline Vec3<double> cube_corner(double r) { return {r, r, r}; }
 /// The box [lo, hi] that grows where child 0 grows (what 1-Lipschitz warps and offsets keep).
 inline NodeBox child_grows_box(const NodeCompilation& c, const Vec3<double>& lo, const Vec3<double>& hi) {
   return {lo, hi, c.child(0).box_grows};
+}
+
+/// The child's box grown by the baked scalar r of slot 0, growing, where the child
+/// grows: an offset f − r (round, shell's |f| − r) is ≤ 0 only where f ≤ r, within r of
+/// the box, and f − r ≥ dist(p, box) − r ≥ dist(p, box ± r). Unknown otherwise, or when
+/// r is a uniform.
+inline NodeBox offset_child_box(const NodeCompilation& c) {
+  if (!c.child(0).box_grows || c.uniform({0})) return {};
+  const double r = c.value(0).x;
+  return {c.child(0).box_lo - cube_corner(r), c.child(0).box_hi + cube_corner(r), true};
 }
 
 /// Reads a node's slots as T: a uniform's current value, or the baked constant
@@ -234,6 +245,7 @@ extern const NodeOperations kPolynomialLeafOperations;  // polynomial_leaf.cpp: 
 extern const NodeOperations kUnionOperations, kIntersectionOperations, kDifferenceOperations, kSmoothUnionOperations,
     kSmoothIntersectionOperations, kSmoothDifferenceOperations;                         // boolean_operators.cpp
 extern const NodeOperations kTranslateOperations, kRotateOperations, kScaleOperations;  // affine_transforms.cpp
+extern const NodeOperations kShellOperations;                                           // shell.cpp
 extern const NodeOperations kTwistOperations, kBendOperations, kRoundOperations, kElongateOperations,
     kSymmetryOperations, kRepeatOperations, kRepeatFiniteOperations, kDisplaceOperations;  // domain_operators.cpp
 
@@ -241,5 +253,11 @@ extern const NodeOperations kTwistOperations, kBendOperations, kRoundOperations,
 inline void classify_lipschitz(NodeCompilation& c) { c.out.node_class = NodeClass::lipschitz; }
 /// A node that keeps its children's class (isometries, uniform scaling, sharp booleans, 1-Lipschitz warps).
 inline void classify_as_children(NodeCompilation& c) { c.out.node_class = c.children_class(); }
+/// Safe mode: a bound, or weaker when a child is (an outer bound stays one: the warps'
+/// and the repetitions' proofs use the child's claim on the side of the point only).
+/// Fast mode: an estimate.
+inline NodeClass bound_or_weaker(const NodeCompilation& c) {
+  return c.safe() ? std::max(NodeClass::bound, c.children_class()) : NodeClass::estimate;
+}
 
 }  // namespace implicitizer

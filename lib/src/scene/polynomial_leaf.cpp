@@ -9,6 +9,7 @@
 #include "implicitizer/polynomial/parser.hpp"
 #include "implicitizer/polynomial/ring.hpp"
 #include "implicitizer/scene/primitives.hpp"
+#include "implicitizer/sdf/enclosure.hpp"
 #include "implicitizer/sdf/polynomial_program.hpp"
 #include "node_operations.hpp"
 
@@ -68,12 +69,24 @@ struct LeafEquation {
   std::optional<PatchBounds> bounds;
 };
 
-LeafEquation implicitize_leaf(const PolynomialLeafSource& source, const Budget& budget, const std::string& field) {
+// A plane curve's equation in x, y moved into the ring x, y, z (where it is the
+// cylinder over the curve).
+Polynomial into_space(const Polynomial& curve) {
+  const std::size_t variables[2] = {0, 1};
+  return curve.map_to(space_ring(), variables);
+}
+
+LeafEquation implicitize_leaf(const PolynomialLeafSource& source, const Budget& budget, const std::string& field,
+                              int dimension) {
   LeafEquation out;
   Parametrization parametrization;
+  if (dimension == 2 && !source.coordinates[2].empty()) {
+    throw InputError("invalid_value", "a plane curve has coordinates x and y only").in_field(field + ".z");
+  }
   try {
-    parametrization = parse_parametrization(source.coordinates[0], source.coordinates[1], source.coordinates[2],
-                                            source.parameter_names, budget);
+    std::vector<std::string> coordinates(source.coordinates.begin(),
+                                         source.coordinates.begin() + (dimension == 2 ? 2 : 3));
+    parametrization = parse_parametrization(coordinates, source.parameter_names, budget);
   } catch (const InputError& e) {
     throw at_field(e, field, "x");
   }
@@ -85,11 +98,17 @@ LeafEquation implicitize_leaf(const PolynomialLeafSource& source, const Budget& 
     } catch (const InputError& e) {
       throw at_field(e, field, "domain");
     }
+    // A curve lies in the plane z = 0.
+    if (dimension == 2) {
+      out.bounds->lo.emplace_back(0);
+      out.bounds->hi.emplace_back(0);
+    }
   }
   ImplicitizeParams params;
   params.budget = budget;
   try {
     out.f = implicitize(parametrization, params).implicit;
+    if (dimension == 2) out.f = into_space(out.f);
   } catch (const NoSingleEquation& e) {
     throw InputError(e.code(), std::string("the parametrization has no single implicit equation: ") + e.what())
         .in_field(field);
@@ -100,16 +119,18 @@ LeafEquation implicitize_leaf(const PolynomialLeafSource& source, const Budget& 
 }
 
 LeafEquation leaf_equation(NodeKind kind, const PolynomialLeafSource& source, const Budget& budget,
-                           const std::string& field) {
+                           const std::string& field, int dimension) {
   LeafEquation out;
   if (kind == NodeKind::implicit) {
     try {
-      out.f = parse_polynomial(source.equation, space_ring(), budget);
+      // A curve's equation is parsed in x, y: a z in it is `unknown_variable`.
+      out.f = dimension == 2 ? into_space(parse_polynomial(source.equation, plane_ring(), budget))
+                             : parse_polynomial(source.equation, space_ring(), budget);
     } catch (const InputError& e) {
       throw at_field(e, field, "equation");
     }
   } else {
-    out = implicitize_leaf(source, budget, field);
+    out = implicitize_leaf(source, budget, field, dimension);
   }
   if (out.f.is_constant()) {
     throw InputError("constant_polynomial", "a constant polynomial has no surface")
@@ -164,26 +185,67 @@ TrimBox trim_box(const PatchBounds& bounds, const PolynomialLeafSource& source, 
 
 }  // namespace
 
+namespace {
+
+// A curve's frame box: its x–y rectangle, and z in [−m, m] with m the larger half side
+// of the rectangle, so that the frame's scale is the rectangle's and z = 0 its centre.
+SceneBox curve_frame_box(SceneBox box) {
+  const Rational half = std::max(box.hi[0] - box.lo[0], box.hi[1] - box.lo[1]) / Rational(2);
+  box.lo[2] = -half;
+  box.hi[2] = half;
+  return box;
+}
+
+// The box a leaf's value is clipped to: the frame's cube c ± 1/s (docs/sdf.md §3), in
+// x, y, z, or its x–y square for a curve.
+std::vector<std::pair<Rational, Rational>> clipping_box(const SceneBox& frame_box, int dimension) {
+  const SceneFrame frame = make_scene_frame(frame_box);
+  const Rational half = Rational(1) / frame.scale;
+  std::vector<std::pair<Rational, Rational>> box;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(dimension); ++i) {
+    box.emplace_back(frame.centre[i] - half, frame.centre[i] + half);
+  }
+  return box;
+}
+
+// The shape the leaf draws (sdf_shape.hpp), and whether F is negated for it.
+Enclosure resolve_shape(const PolynomialLeafSource& source, const Polynomial& f, const SceneBox& frame_box, bool patch,
+                        int dimension, const Budget& budget) {
+  if (source.shape != SdfShape::automatic) return {source.shape, false, "asked"};
+  // A patch is an open piece of its surface: it encloses nothing.
+  if (patch) return {SdfShape::sheet, false, "a patch with a parameter domain is a sheet"};
+  return decide_enclosure(f, clipping_box(frame_box, dimension), budget);
+}
+
+}  // namespace
+
 PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& source, const SceneBox& default_box,
-                                     SdfMode mode, const Budget& budget, const std::string& field) {
-  const LeafEquation equation = leaf_equation(kind, source, budget, field);
-  const Polynomial& f = equation.f;
+                                     SdfMode mode, const Budget& budget, const std::string& field, int dimension) {
+  const LeafEquation equation = leaf_equation(kind, source, budget, field, dimension);
   SceneBox frame_box = source.box ? *source.box : default_box;
   std::optional<TrimBox> trim;
   if (equation.bounds) trim = trim_box(*equation.bounds, source, frame_box, field);
-
-  PolynomialLeaf leaf(f);
+  if (dimension == 2) frame_box = curve_frame_box(frame_box);
+  PolynomialLeaf leaf(equation.f);
+  Enclosure shape;
   try {
+    shape = resolve_shape(source, equation.f, frame_box, equation.bounds.has_value(), dimension, budget);
+    const Polynomial f = shape.negate ? -equation.f : equation.f;
     if (mode == SdfMode::safe) {
-      leaf.safe_ = SafeSdf::build(f, frame_box, budget);
+      leaf.safe_ = SafeSdf::build(f, frame_box, budget, shape.shape);
     } else {
-      leaf.fast_ = FastSdf::build(f, frame_box, budget);
+      leaf.fast_ = FastSdf::build(f, frame_box, budget, shape.shape);
     }
   } catch (const InputError& e) {
     // invalid_box concerns the box; degree_too_high the equation.
     throw at_field(e, field, e.code() == "invalid_box" ? "box" : (kind == NodeKind::implicit ? "equation" : ""));
   }
+  // A solid asked of a patch is the solid F <= 0 in its box: nothing to trim.
+  if (shape.shape == SdfShape::solid) trim.reset();
   leaf.frame_box_ = frame_box;
+  leaf.shape_ = shape.shape;
+  leaf.shape_reason_ = shape.reason;
+  leaf.negated_ = shape.negate;
   if (trim) {
     leaf.trimmed_ = true;
     leaf.lo_ = trim->lo;
@@ -213,12 +275,18 @@ NodeBox bound_leaf(const NodeCompilation& c) {
   }
   // Beyond kFarField (u = (p − c)·s, max norm) both modes return the positive box
   // distance: the solid lies in the cube c ± kFarField/s (widened by 1e-6 for fp32's
-  // rounding of u).
+  // rounding of u). A sheet is max(|d|, box distance) ≥ 0, 0 only inside the cube
+  // c ± 1/s itself (safe: |u_i| ≤ b/(1 − 4ε), b one float above 1 at most).
   const SceneFrame frame = make_scene_frame(leaf.frame_box());
-  const double half = std::max(FastSdf::kFarField, SafeSdf::kFarField) / to_mpq(frame.scale).get_d() * (1 + 1e-6);
+  const double reach = leaf.shape() == SdfShape::sheet ? 1 : std::max(FastSdf::kFarField, SafeSdf::kFarField);
+  const double half = reach / to_mpq(frame.scale).get_d() * (1 + 1e-6);
   const Vec3<double> centre{to_mpq(frame.centre[0]).get_d(), to_mpq(frame.centre[1]).get_d(),
                             to_mpq(frame.centre[2]).get_d()};
-  return {centre - cube_corner(half), centre + cube_corner(half), false};
+  // A fast sheet is max(|d|, b) with b the exact distance to the cube outside it: it
+  // grows. (Safe mode rounds b down by a relative 2^-19 or so, which the absolute
+  // widening above cannot cover far away.)
+  const bool grows = leaf.shape() == SdfShape::sheet && !c.safe();
+  return {centre - cube_corner(half), centre + cube_corner(half), grows};
 }
 
 template <typename T>

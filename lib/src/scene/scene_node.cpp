@@ -98,6 +98,12 @@ const std::vector<NodeKindInfo>& kinds_table() {
        NodeArity::unary,
        {{"factor", scalar, positive, true, std::nullopt}},
        &kScaleOperations},
+      // |d| − thickness (shell.hpp): a sheet as a thin solid.
+      {NodeKind::shell,
+       "shell",
+       NodeArity::unary,
+       {{"thickness", scalar, positive, true, std::nullopt}},
+       &kShellOperations},
       // Domain operators (domain_operators.hpp). Components a range cannot say (size
       // >= 0, axes 0 or 1, period >= 0, integer limits) are checked by the kind's classify (domain_operators.cpp).
       {NodeKind::twist, "twist", NodeArity::unary, {{"k", scalar, any, true, std::nullopt}}, &kTwistOperations},

@@ -1,9 +1,13 @@
 #include "implicitizer/sdf/fast_sdf.hpp"
 
+#include <stdexcept>
+
 namespace implicitizer {
 
-FastSdf FastSdf::build(const Polynomial& f, const SceneBox& box, const Budget& budget) {
+FastSdf FastSdf::build(const Polynomial& f, const SceneBox& box, const Budget& budget, SdfShape shape) {
+  if (shape == SdfShape::automatic) throw std::invalid_argument("FastSdf::build: decide the shape first");
   FastSdf sdf;
+  sdf.shape_ = shape;
   sdf.frame_ = make_scene_frame(box);
   sdf.program_ = PolynomialProgram::compile(frame_polynomial(f, sdf.frame_, budget));
   // The centre and scale are floats already (SceneFrame's invariant): exact here.
@@ -21,10 +25,12 @@ FastSdf FastSdf::build(const Polynomial& f, const SceneBox& box, const Budget& b
 std::string FastSdf::to_glsl(const std::string& function) const {
   const std::string s = format_glsl_float(scale_float_);
   const std::string far = format_glsl_float(static_cast<float>(kFarField));
+  const bool sheet = shape_ == SdfShape::sheet;
   std::string out;
   out += "// " + function + ": fast distance estimate F/|grad F| (first order, not a bound) of the\n";
-  out += "// degree-" + std::to_string(program_.degree()) +
-         " surface F = 0, negative where F < 0; evaluated in the frame u = (p - c) * s\n";
+  out += "// degree-" + std::to_string(program_.degree()) + " surface F = 0, " +
+         (sheet ? "as a sheet (>= 0, 0 on the surface)" : "negative where F < 0") +
+         "; evaluated in the frame u = (p - c) * s\n";
   out += "// of the scene box, with |u| <= " + format_glsl_float(static_cast<float>(kFarField)) +
          " (farther: the distance to the box). See docs/sdf.md.\n";
   out += "float " + function + "(vec3 p) {\n";
@@ -43,9 +49,8 @@ std::string FastSdf::to_glsl(const std::string& function) const {
   out += "  }\n";
   out += program_.to_glsl("  ");
   out += "  float d = g / max(sqrt(gu * gu + gv * gv + gw * gw), " +
-         format_glsl_float(static_cast<float>(kGradientFloor)) + ") * " + format_glsl_float(half_extent_float_) +
-         ";\n";
-  out += "  return max(d, box);\n";
+         format_glsl_float(static_cast<float>(kGradientFloor)) + ") * " + format_glsl_float(half_extent_float_) + ";\n";
+  out += sheet ? "  return max(abs(d), box);\n" : "  return max(d, box);\n";
   out += "}\n";
   return out;
 }

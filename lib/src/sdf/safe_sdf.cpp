@@ -2,6 +2,7 @@
 
 #include <cfloat>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "implicitizer/core/errors.hpp"
@@ -97,8 +98,10 @@ double box_half_in_frame(const SceneBox& box, const SceneFrame& frame) {
 
 }  // namespace
 
-SafeSdf SafeSdf::build(const Polynomial& f, const SceneBox& box, const Budget& budget) {
+SafeSdf SafeSdf::build(const Polynomial& f, const SceneBox& box, const Budget& budget, SdfShape shape) {
+  if (shape == SdfShape::automatic) throw std::invalid_argument("SafeSdf::build: decide the shape first");
   SafeSdf sdf;
+  sdf.shape_ = shape;
   sdf.frame_ = make_scene_frame(box);
   const Polynomial g = frame_polynomial(f, sdf.frame_, budget);
   std::vector<Polynomial> absolute_terms;
@@ -147,8 +150,10 @@ std::string SafeSdf::to_glsl(const std::string& function) const {
   std::string out;
   out += "// " + function + ": safe distance bound of the degree-" + std::to_string(program_.degree()) +
          " surface F = 0 (never more than the\n";
-  out += "// distance to the surface inside the box; 0 within fp32's resolution of it), negative\n";
-  out += "// where F < 0; evaluated in the frame u = (p - c) * s of the scene box, with\n";
+  const bool sheet = shape_ == SdfShape::sheet;
+  out += "// distance to the surface inside the box; 0 within fp32's resolution of it), " +
+         std::string(sheet ? "as a sheet\n// (>= 0, 0 on the surface)" : "negative\n// where F < 0") +
+         "; evaluated in the frame u = (p - c) * s of the scene box, with\n";
   out += "// |u| <= " + f(static_cast<float>(kFarField)) + " (farther: the distance to the box). See docs/sdf.md.\n";
   out += "float " + function + "(vec3 p) {\n";
   const char* axes[3] = {"x", "y", "z"};
@@ -208,11 +213,16 @@ std::string SafeSdf::to_glsl(const std::string& function) const {
   out += "  }\n";
   out += "  float radius = safe - (abs_u + abs_v + abs_w) * " + f(k.u_error) + ";\n";
   out += "  if (!(radius > 0.0)) {\n    return box * " + f(k.half_extent) + " * " + f(k.out_shrink) + ";\n  }\n";
+  if (sheet) {
+    // Both terms bound the distance to Z ∩ box from below, whatever F's sign.
+    out += "  return max(box, radius) * " + f(k.half_extent) + " * " + f(k.out_shrink) + ";\n}\n";
+    return out;
+  }
   out += "  if (g_value >= 0.0) {\n    return max(box, radius) * " + f(k.half_extent) + " * " + f(k.out_shrink) +
          ";\n  }\n";
   out += "  if (box > 0.0) {\n    return box * " + f(k.half_extent) + " * " + f(k.out_shrink) + ";\n  }\n";
-  out += "  float inner = max(" + f(k.box_half_inner) + " - max(abs_u, max(abs_v, abs_w)) * " + f(k.u_grow) +
-         ", 0.0);\n";
+  out +=
+      "  float inner = max(" + f(k.box_half_inner) + " - max(abs_u, max(abs_v, abs_w)) * " + f(k.u_grow) + ", 0.0);\n";
   out += "  return -(min(radius, inner) * " + f(k.half_extent) + " * " + f(k.out_shrink) + ");\n";
   out += "}\n";
   return out;

@@ -7,9 +7,11 @@
 /// own freedoms: fused multiply-adds, its sin/cos/tan for angles given as uniforms;
 /// docs/sdf.md, "Scenes", lists the measured differences on llvmpipe).
 ///
-/// The GLSL defines `float NAME_sdf(vec3 p)`, negative inside; before it, the uniform
-/// declarations and the helpers of the node kinds present in the scene, and only
-/// those, each prefixed `NAME_` so that two scenes can be pasted into one shader.
+/// The GLSL defines `float NAME_sdf(vec3 p)`, negative inside (a sheet leaf has no
+/// inside: sdf_shape.hpp; `shell` gives it one); a plane curve's (SceneParams::
+/// dimension 2) is `float NAME_sdf(vec2 p)`. Before it, the uniform declarations and
+/// the helpers of the node kinds present in the scene, and only those, each prefixed
+/// `NAME_` so that two scenes can be pasted into one shader.
 ///
 /// Safe mode. Every node's value v then satisfies, at every point p,
 ///     v(p) > 0  ⇒  v(p) ≤ dist(p, {v ≤ 0})   and   v(p) < 0  ⇒  −v(p) ≤ dist(p, {v ≥ 0}),
@@ -49,15 +51,19 @@ struct SceneParams {
   std::string root_field = "scene";
   /// 3: a scene in space, `float NAME_sdf(vec3 p)`. 2: a plane curve (its leaves are
   /// polynomials in x and y, or parametrizations with x and y only), `float
-  /// NAME_sdf(vec2 p)`, evaluated at z = 0 (docs/sdf.md, "Curves").
+  /// NAME_sdf(vec2 p)`, evaluated at z = 0 (docs/sdf.md, "Curves"): the scene is the
+  /// slice z = 0 of the 3-D scene its nodes describe. Anything else is InputError
+  /// `invalid_value` (field "dimension").
   int dimension = 3;
 };
 
-/// What a node's value guarantees (exact arithmetic).
+/// What a node's value guarantees (exact arithmetic), strongest first: a node is
+/// at most as strong as its weakest child.
 enum class NodeClass : std::uint8_t {
-  lipschitz,  ///< 1-Lipschitz with the right sign: a bound, and smooth operators keep it
-  bound,      ///< |v| ≤ distance to the other side (see the file comment), not 1-Lipschitz
-  estimate,   ///< neither (fast mode: F/|∇F|, the ellipsoid's approximation, and what uses them)
+  lipschitz,    ///< 1-Lipschitz with the right sign: a bound, and smooth operators keep it
+  bound,        ///< |v| ≤ distance to the other side (see the file comment), not 1-Lipschitz
+  outer_bound,  ///< only v > 0 ⇒ v ≤ distance to the solid (a shell of a bound: shell.hpp)
+  estimate,     ///< neither (fast mode: F/|∇F|, the ellipsoid's approximation, and what uses them)
 };
 
 /// A parameter exposed to the front-end as a GLSL uniform.
@@ -85,8 +91,9 @@ class CompiledScene {
   T evaluate(const Vec3<T>& p, const UniformValues& values) const;
 
   /// The GLSL: uniform declarations, helpers of the kinds present, the polynomial
-  /// leaves NAME_leaf<k>, then `float NAME_sdf(vec3 p)`. Compiles as GLSL ES 3.00
-  /// (with `precision highp float`) and GLSL 330.
+  /// leaves NAME_leaf<k>, then `float NAME_sdf(vec3 p)` (dimension 2: `float
+  /// NAME_space(vec3 p)` and `float NAME_sdf(vec2 p)` calling it at vec3(p, 0.0)).
+  /// Compiles as GLSL ES 3.00 (with `precision highp float`) and GLSL 330.
   std::string to_glsl() const { return glsl_; }
 
   /// The uniforms, in order of first appearance (depth first, children in order).
@@ -98,6 +105,9 @@ class CompiledScene {
 
   /// NAME_sdf.
   std::string function_name() const { return name_ + "_sdf"; }
+  /// 3 (NAME_sdf takes a vec3) or 2 (a plane curve: NAME_sdf takes a vec2 and calls
+  /// the 3-D function NAME_space at z = 0; evaluate() then wants points with z = 0).
+  int dimension() const { return dimension_; }
   /// The mode compiled for.
   SdfMode mode() const { return mode_; }
   /// What the root's value guarantees.
@@ -142,6 +152,7 @@ class CompiledScene {
 
   std::string name_;
   SdfMode mode_ = SdfMode::fast;
+  int dimension_ = 3;
   std::vector<Node> nodes_;
   std::uint32_t root_ = 0;
   std::vector<PolynomialLeaf> leaves_;

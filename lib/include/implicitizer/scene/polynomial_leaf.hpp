@@ -5,6 +5,22 @@
 /// distance function of mode fast (FastSdf: F/|∇F|) or safe (SafeSdf: a lower bound)
 /// of F = 0 in the leaf's frame box, named NAME_leaf<k> in the GLSL.
 ///
+/// Shape (sdf_shape.hpp). The source's shape is resolved here, once: solid and sheet
+/// as asked; automatic by decide_enclosure() (enclosure.hpp) on the box the value is
+/// clipped to (the frame's cube c ± h; its x–y square for a curve): solid, with F
+/// negated when F < 0 on the boundary, iff the zero set provably stays off the
+/// boundary and encloses a region; else sheet. A parametric leaf with a domain is a
+/// sheet under automatic (the patch, trimmed below); asked for a solid it is the solid
+/// F <= 0 in its frame box, untrimmed.
+///
+/// Curves (SceneParams::dimension 2). The equation is F(x, y) (a z in it is
+/// `unknown_variable`), or the implicitization of a parametrization with x and y only;
+/// the leaf is the 3-D leaf of the cylinder F(x, y) = 0 over the curve, in the frame
+/// box [x0, x1]×[y0, y1]×[−m, m] with m the larger half side of the 2-D box (so the
+/// frame's scale is the 2-D box's), evaluated by the scene at z = 0: the distance in
+/// space from (x, y, 0) to the cylinder is the planar distance to the curve, so both
+/// modes keep their meaning (docs/sdf.md, "Curves").
+///
 /// Trimming. A parametric leaf with a parameter domain D is the patch X(D), not the
 /// whole algebraic surface: bound_patch() (patch_bounds.hpp) gives an exact box B ⊇ X(D)
 /// (its corners rounded outwards to float), the frame box is B padded by 1e-3 of its
@@ -31,8 +47,8 @@
 #include "implicitizer/sdf/fast_sdf.hpp"
 #include "implicitizer/sdf/glsl_export.hpp"
 #include "implicitizer/sdf/safe_sdf.hpp"
-#include "implicitizer/sdf/sdf_shape.hpp"
 #include "implicitizer/sdf/scene_frame.hpp"
+#include "implicitizer/sdf/sdf_shape.hpp"
 
 namespace implicitizer {
 
@@ -57,8 +73,11 @@ class PolynomialLeaf {
   /// parse errors, `constant_polynomial`, `invalid_box`, `degree_too_high` (safe),
   /// `invalid_domain`, `unbounded_patch`, `no_single_equation` (the image is not a
   /// surface); LimitExceeded from the budget.
+  /// `dimension` is 3 (a surface) or 2 (a plane curve, see the file comment; a
+  /// parametric curve's z text must be empty, else InputError `invalid_value` at
+  /// field + ".z"). The shape is resolved as the file comment says.
   static PolynomialLeaf build(NodeKind kind, const PolynomialLeafSource& source, const SceneBox& default_box,
-                              SdfMode mode, const Budget& budget, const std::string& field);
+                              SdfMode mode, const Budget& budget, const std::string& field, int dimension = 3);
 
   /// The leaf's value at p: d (untrimmed, signed) or the trimmed sheet.
   template <typename T>
@@ -81,12 +100,18 @@ class PolynomialLeaf {
   /// Whether the leaf is a trimmed sheet.
   bool trimmed() const { return trimmed_; }
   /// The shape the leaf's value describes (never automatic: what was picked).
-  SdfShape shape() const { return trimmed_ ? SdfShape::sheet : SdfShape::solid; }
+  SdfShape shape() const { return shape_; }
+  /// Why that shape: "asked", or decide_enclosure()'s reason under automatic.
+  const std::string& shape_reason() const { return shape_reason_; }
+  /// Whether the value is that of −F (a solid whose F is negative on its box's
+  /// boundary: the enclosed region is then where F > 0).
+  bool negated() const { return negated_; }
   /// The trimming box's corners as floats (rounded outwards from the exact bound).
   const Vec3<float>& trim_lo() const { return lo_float_; }
   /// See trim_lo().
   const Vec3<float>& trim_hi() const { return hi_float_; }
-  /// The implicit equation F (in x, y, z).
+  /// The implicit equation F (in x, y, z; a curve's has no z), as given or
+  /// implicitized, before any negation (negated()).
   const Polynomial& equation() const { return equation_; }
   /// The frame box the distance is computed in.
   const SceneBox& frame_box() const { return frame_box_; }
@@ -100,6 +125,9 @@ class PolynomialLeaf {
   std::optional<FastSdf> fast_;
   std::optional<SafeSdf> safe_;
   SceneBox frame_box_;
+  SdfShape shape_ = SdfShape::solid;
+  std::string shape_reason_;
+  bool negated_ = false;
   bool trimmed_ = false;
   Vec3<double> lo_, hi_;
   Vec3<float> lo_float_, hi_float_;

@@ -84,6 +84,7 @@ enum class NodeKind : std::uint8_t {
   translate,
   rotate,
   scale,
+  shell,
   // Domain operators (domain_operators.hpp), one child.
   twist,
   bend,
@@ -163,8 +164,9 @@ struct ParameterValue {
 
 /// The sources of a polynomial leaf (kinds implicit and parametric).
 struct PolynomialLeafSource {
-  std::string equation;                    ///< implicit: F(x, y, z) in the contract's syntax; the surface is F = 0
-  std::array<std::string, 3> coordinates;  ///< parametric: x, y, z in the parameters
+  std::string equation;  ///< implicit: F(x, y, z) in the contract's syntax; the surface is F = 0
+  /// parametric: x, y, z in the parameters (z empty for a plane curve, SceneParams::dimension 2)
+  std::array<std::string, 3> coordinates;
   std::optional<std::vector<std::string>> parameter_names;  ///< parametric: their order (default: as they appear)
   /// parametric: one closed interval per parameter, in parameter order; empty: the
   /// default domain (docs/sdf.md, "Patches"). The leaf is the patch X(domain).

@@ -16,11 +16,17 @@
 /// the floor instead: smaller in magnitude, never inf or NaN, but where the
 /// surface is singular (∇F = 0 on it) it is not a distance at all.
 ///
-/// What is drawn is the solid F <= 0 clipped to the box: max(estimate, signed distance
-/// to the box), so its surface inside the box plus the caps where the box's faces cut
-/// the solid, and nothing outside the box (before this, the estimate alone drew the
-/// surface out to twice the box and jumped where that region began). Negative exactly
-/// where F < 0 inside the box. Far from the box (max |u_i| > kFarField) the value is
+/// What is drawn depends on the shape (sdf_shape.hpp), fixed at build time:
+///   - solid: F <= 0 clipped to the box, max(estimate, signed distance to the box), so
+///     its surface inside the box plus the caps where the box's faces cut the solid,
+///     and nothing outside the box (before this, the estimate alone drew the surface
+///     out to twice the box and jumped where that region began). Negative exactly
+///     where F < 0 inside the box.
+///   - sheet: the surface itself, max(|estimate|, signed distance to the box): |d|
+///     inside the box (the box term is negative there), the distance to the box
+///     outside; >= 0 everywhere and 0 exactly on F = 0 inside the box, no caps.
+/// ("The box" is the frame's cube c ± h, h the largest half side: the box itself when
+/// it is a cube.) Far from the box (max |u_i| > kFarField) the value is
 /// the box distance alone: the polynomial is only evaluated where |u_i| <= 2, so
 /// |u|^18 <= 2.6e5 cannot overflow fp32.
 
@@ -32,6 +38,7 @@
 #include "implicitizer/polynomial/polynomial.hpp"
 #include "implicitizer/sdf/polynomial_program.hpp"
 #include "implicitizer/sdf/scene_frame.hpp"
+#include "implicitizer/sdf/sdf_shape.hpp"
 
 namespace implicitizer {
 
@@ -46,12 +53,16 @@ class FastSdf {
   /// Beyond this max-norm of u the box distance is returned (see the file comment).
   static constexpr double kFarField = 2;
 
-  /// Frames `f` (three variables x, y, z in ring order) in `box` and compiles it.
-  /// Throws InputError `constant_polynomial` (no surface), `invalid_box`.
-  static FastSdf build(const Polynomial& f, const SceneBox& box, const Budget& budget = Budget());
+  /// Frames `f` (three variables x, y, z in ring order) in `box` and compiles the
+  /// value of `shape` (solid or sheet; automatic is decided by the caller,
+  /// enclosure.hpp, and throws std::invalid_argument here). Throws InputError
+  /// `constant_polynomial` (no surface), `invalid_box`.
+  static FastSdf build(const Polynomial& f, const SceneBox& box, const Budget& budget = Budget(),
+                       SdfShape shape = SdfShape::solid);
 
   /// The estimate at p = (x, y, z), computed exactly as the GLSL does (float) or in
-  /// double with the double-rounded constants. Negative where F < 0.
+  /// double with the double-rounded constants. Solid: negative where F < 0 in the
+  /// box; sheet: >= 0.
   template <typename T>
   T evaluate(T x, T y, T z) const {
     const T s = pick<T>(scale_, scale_float_);
@@ -70,9 +81,10 @@ class FastSdf {
     const auto& g = r.gradient;
     const T length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
     const T d = r.value / std::max(length, T(kGradientFloor)) * h;
-    // The solid F <= 0 clipped to the box: its surface inside the box and the caps
-    // where the box's faces cut the solid; nothing outside the box.
-    return std::max(d, box);
+    // Solid: F <= 0 clipped to the box, its surface inside the box and the caps where
+    // the box's faces cut the solid. Sheet: the surface inside the box. Nothing
+    // outside the box either way.
+    return std::max(shape_ == SdfShape::sheet ? std::abs(d) : d, box);
   }
 
   /// `float FUNCTION(vec3 p) { ... }` with a comment line above it. Precondition:
@@ -81,6 +93,8 @@ class FastSdf {
 
   /// The frame (exact, float-representable centre and scale).
   const SceneFrame& frame() const { return frame_; }
+  /// What the value describes: solid or sheet (never automatic).
+  SdfShape shape() const { return shape_; }
   /// The compiled G.
   const PolynomialProgram& program() const { return program_; }
 
@@ -96,6 +110,7 @@ class FastSdf {
 
   SceneFrame frame_;
   PolynomialProgram program_;
+  SdfShape shape_ = SdfShape::solid;
   std::array<double, 3> centre_{};
   std::array<float, 3> centre_float_{};
   double scale_ = 1, half_extent_ = 1;

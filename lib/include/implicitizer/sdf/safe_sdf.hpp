@@ -34,6 +34,14 @@
 /// 0: the point is within fp32's resolution of the surface, and sphere tracing
 /// counts a hit.
 ///
+/// Shapes (sdf_shape.hpp, fixed at build time). Solid: the value has F's sign, and
+/// where F < 0 inside the box it is minus the smaller of the radius and the distance
+/// to the box's faces (the solid clipped to the box). Sheet: where F < 0 the value is
+/// the same as where F > 0, max(box distance, radius) >= 0: both terms are lower
+/// bounds of the distance from p to Z ∩ box (the radius of dist(p, Z), the box term of
+/// dist(p, box)), so their maximum is one too, and it is 0 only where the radius
+/// cannot be certified inside the box.
+///
 /// Fails (returns a small but correct value) near singular points of the surface,
 /// where |∇G| vanishes on it, and where Horner's error exceeds |G| (degree 18 in
 /// the power basis: docs/sdf.md §4). Cost: three passes of the program (G and ∇G,
@@ -47,6 +55,7 @@
 #include "implicitizer/polynomial/polynomial.hpp"
 #include "implicitizer/sdf/polynomial_program.hpp"
 #include "implicitizer/sdf/scene_frame.hpp"
+#include "implicitizer/sdf/sdf_shape.hpp"
 
 namespace implicitizer {
 
@@ -74,15 +83,17 @@ class SafeSdf {
   /// majorant Ĝ (with gradient) and Ĝ (value only). Throws InputError
   /// `constant_polynomial` (no surface), `invalid_box`, `degree_too_high` (Ĝ
   /// exceeds kMajorantLimit already at |u_i| = kFarField: the terms of G cannot all
-  /// be evaluated in fp32 at the box's margin), LimitExceeded from `budget`.
-  static SafeSdf build(const Polynomial& f, const SceneBox& box, const Budget& budget = Budget());
+  /// be evaluated in fp32 at the box's margin), LimitExceeded from `budget`;
+  /// std::invalid_argument for `shape` automatic (the caller decides it: enclosure.hpp).
+  static SafeSdf build(const Polynomial& f, const SceneBox& box, const Budget& budget = Budget(),
+                       SdfShape shape = SdfShape::solid);
 
   /// The bound at p = (x, y, z), computed exactly as the GLSL does (float) or in
-  /// double with double constants and ε = 2^-52. Negative where F < 0. Guarantee
-  /// (docs/sdf.md §6), under the rounding model of the file comment: |value| is at
-  /// most the distance from p to the zero set of F inside the box; where the
-  /// polynomial is evaluated (max_i |u_i| <= kFarField) a nonzero value has the
-  /// sign of F(p); farther out the value is the (positive) distance to the box.
+  /// double with double constants and ε = 2^-52. Guarantee (docs/sdf.md §6), under
+  /// the rounding model of the file comment: |value| is at most the distance from p
+  /// to the zero set of F inside the box. Solid: where the polynomial is evaluated
+  /// (max_i |u_i| <= kFarField) a nonzero value has the sign of F(p); farther out the
+  /// value is the (positive) distance to the box. Sheet: value >= 0 everywhere.
   template <typename T>
   T evaluate(T x, T y, T z) const {
     return evaluate_with_chord_steps(x, y, z, kChordSteps);
@@ -99,6 +110,8 @@ class SafeSdf {
 
   /// The frame (exact, float-representable centre and scale).
   const SceneFrame& frame() const { return frame_; }
+  /// What the value describes: solid or sheet (never automatic).
+  SdfShape shape() const { return shape_; }
   /// The compiled G (value and gradient).
   const PolynomialProgram& program() const { return program_; }
   /// The compiled majorant Ĝ (value and gradient).
@@ -142,6 +155,7 @@ class SafeSdf {
   }
 
   SceneFrame frame_;
+  SdfShape shape_ = SdfShape::solid;
   PolynomialProgram program_;         // G with gradient
   PolynomialProgram majorant_;        // Ĝ with gradient
   PolynomialProgram majorant_value_;  // Ĝ, value only
@@ -203,7 +217,8 @@ T SafeSdf::evaluate_with_chord_steps(T x, T y, T z, int chord_steps) const {
   }
   const T radius = safe - (abs_u + abs_v + abs_w) * k.u_error;
   if (!(radius > zero)) return box * k.half_extent * k.out_shrink;
-  if (g.value >= zero) return std::max(box, radius) * k.half_extent * k.out_shrink;
+  // F > 0, or a sheet: both terms bound the distance to Z ∩ box from below.
+  if (g.value >= zero || shape_ == SdfShape::sheet) return std::max(box, radius) * k.half_extent * k.out_shrink;
   // F < 0: the solid clipped to the box. Outside the box the value is the distance to
   // it (positive); inside, minus the smaller of the radius and the distance to the faces.
   if (box > zero) return box * k.half_extent * k.out_shrink;
