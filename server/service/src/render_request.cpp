@@ -68,7 +68,7 @@ RenderAnswer answer_render_request(const RenderRequest& request, const Budget& c
   answer.png = encode_png(result.image);
   answer.stats = result.stats;
   answer.precision = request.precision;
-  answer.dimension = source.params.dimension;
+  answer.dimension = target.scene().dimension();
   const CompiledScene& scene = target.scene();
   if (scene.leaves().size() == 1 && scene.node_count() == 1) answer.shape = scene.leaves()[0].shape();
   return answer;

@@ -41,7 +41,7 @@ SdfAnswer describe_sdf_request(const CompiledSdfRequest& compiled) {
   answer.glsl = scene.to_glsl();
   answer.function = scene.function_name();
   answer.mode = scene.mode();
-  answer.dimension = source.params.dimension;
+  answer.dimension = scene.dimension();
   answer.uniforms = scene.uniforms();
   // The box actually used: an input's leaf frame (fitted to a patch when no box was
   // given), a scene's box.
