@@ -19,8 +19,10 @@
 /// sphere tracing with v never crosses it ("a bound"; proofs in docs/sdf.md and at
 /// each kind's classify, beside its concept in lib/src/scene/). Smooth operators are only
 /// bounds over 1-Lipschitz children, so compile_scene() tracks NodeClass and refuses
-/// the others (InputError `unsafe_operator`). The claims are of exact arithmetic;
-/// fp32 rounding adds a few ulps of the values involved.
+/// the others (InputError `unsafe_operator`). A shell over a mere bound keeps only the
+/// first half (an outer bound: tracing from outside never enters it), so a difference
+/// refuses one as its subtrahend. The claims are of exact arithmetic; fp32 rounding
+/// adds a few ulps of the values involved.
 ///
 /// Adding a node kind: see scene_node.hpp.
 
@@ -166,9 +168,12 @@ class CompiledScene {
 /// `name_collision` (two nodes with one name, or a uniform named like another GLSL
 /// identifier of the scene), `invalid_scene` (wrong number of children, uniforms on a
 /// node without a name, an unknown parameter), `missing_parameter`, `invalid_value`
-/// (out of range, or a parameter that cannot be a uniform), `unsafe_operator` (safe
-/// mode: a smooth operator over a child that is not 1-Lipschitz), `scene_too_large`,
-/// the errors of the leaves (parse errors, `constant_polynomial`, `invalid_box`,
+/// (out of range, or a parameter that cannot be a uniform; `dimension` not 2 or 3; a
+/// curve's parametric leaf with a z), `unsafe_operator` (safe mode: a smooth
+/// operator, round or displace over a child that is not 1-Lipschitz, a shell over an
+/// outer bound, a difference subtracting one), `scene_too_large`,
+/// the errors of the leaves (parse errors, `unknown_variable` for a z in a curve's
+/// equation, `constant_polynomial`, `invalid_box`,
 /// `invalid_domain`, `unbounded_patch`, NoSingleEquation); LimitExceeded when
 /// `budget` runs out.
 CompiledScene compile_scene(const SceneNode& root, const SceneParams& options, const Budget& budget = Budget());
