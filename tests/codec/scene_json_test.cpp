@@ -102,7 +102,7 @@ TEST(SceneJson, TheDocumentedExamplesCompile) {
      {"type": "rotate", "axis": [1, 0, 0], "angle": 1.5707963, "child": {"type": "torus", "major": 1, "minor": 0.25}},
      {"type": "parametric", "x": "s", "y": "t", "z": "s*t", "domain": [[0, 1], [0, 1]]}]})");
   EXPECT_EQ(sdf.uniforms().size(), 1u);
-  EXPECT_NE(sdf.to_glsl().find("s_trim"), std::string::npos);
+  EXPECT_NE(sdf.to_glsl().find("s_leaf0_cover("), std::string::npos);
 }
 
 TEST(SceneJson, ErrorsCarryCodesAndJsonPaths) {

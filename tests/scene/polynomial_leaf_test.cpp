@@ -49,18 +49,45 @@ TEST(PolynomialLeaf, ImplicitSphereIsItsDistanceEstimate) {
   EXPECT_LT(scene.evaluate(V{0.2, 0.1, 0}), 0);
 }
 
-TEST(PolynomialLeaf, ParametricWithoutDomainIsTheWholeSurface) {
-  // x = s, y = t, z = s·t: z − x·y = 0, everywhere in the box, also far outside
-  // [0, 1]². It crosses the box's faces, so shape auto draws it as a sheet (>= 0 on
-  // both sides); asked for a solid, the two sides have opposite signs.
+TEST(PolynomialLeaf, PolynomialPatchWithoutDomainIsTheUnitSquarePatch) {
+  // x = s, y = t, z = s·t: no domain means [0, 1]² (a polynomial map is unbounded on
+  // the plane), so points of z = x·y far outside [0, 1]² are not hits.
   const CompiledScene scene = testing::compile(parametric("s", "t", "s*t"));
+  ASSERT_TRUE(scene.leaves().front().trimmed());
   EXPECT_EQ(scene.leaves().front().shape(), SdfShape::sheet);
-  EXPECT_NEAR(scene.evaluate(V{1.5, -1, -1.5}), 0, 1e-12);
-  EXPECT_GT(scene.evaluate(V{0, 0, 0.5}), 0.4);
-  EXPECT_GT(scene.evaluate(V{0, 0, -0.5}), 0.4);
+  EXPECT_NEAR(scene.evaluate(V{0.5, 0.5, 0.25}), 0, 1e-12);
+  EXPECT_GT(scene.evaluate(V{1.5, -1, -1.5}), 0.5);
+  // The frame box is fitted to the patch: [0, 1]³ padded by 1e-3.
+  const SceneBox& box = scene.leaves().front().frame_box();
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(box.lo[i], Rational(-1, 1000));
+    EXPECT_EQ(box.hi[i], Rational(1001, 1000));
+  }
+}
+
+TEST(PolynomialLeaf, ClosedRationalSurfaceWithoutDomainIsWhole) {
+  // The stereographic sphere is bounded on the whole parameter plane: its default
+  // domain is the plane, nothing is trimmed, and the south pole (s = ∞) is a hit.
+  const CompiledScene scene =
+      testing::compile(parametric("2*s/(1+s^2+t^2)", "2*t/(1+s^2+t^2)", "(1-s^2-t^2)/(1+s^2+t^2)"));
+  EXPECT_FALSE(scene.leaves().front().trimmed());
+  EXPECT_NEAR(scene.evaluate(V{0, 0, -1}), 0, 1e-9);
+  EXPECT_NEAR(scene.evaluate(V{-1, 0, 0}), 0, 1e-9);
+  const SceneBox& box = scene.leaves().front().frame_box();
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_LE(box.lo[i], Rational(-1));
+    EXPECT_GE(box.hi[i], Rational(1));
+    EXPECT_LT(box.hi[i], Rational(102, 100));
+  }
+}
+
+TEST(PolynomialLeaf, PatchAskedForASolidIsTheUntrimmedSolidInItsBox) {
+  // Shape solid: the solid z − x·y <= 0 in the fitted box, not trimmed, the two sides
+  // of the surface with opposite signs.
   const CompiledScene solid = testing::compile(with_shape(parametric("s", "t", "s*t"), SdfShape::solid));
   EXPECT_EQ(solid.leaves().front().shape(), SdfShape::solid);
-  EXPECT_NE(solid.evaluate(V{0, 0, 0.5}) < 0, solid.evaluate(V{0, 0, -0.5}) < 0);
+  EXPECT_FALSE(solid.leaves().front().trimmed());
+  EXPECT_NE(solid.evaluate(V{0.5, 0.5, 0.5}) < 0, solid.evaluate(V{0.5, 0.5, 0.0}) < 0);
 }
 
 TEST(PolynomialLeaf, PatchIsTrimmedToTheBoxOfItsDomain) {
@@ -161,6 +188,13 @@ TEST(PolynomialLeaf, ErrorsNameTheLeafField) {
   EXPECT_EQ(code_and_field(parametric("s", "t", "888888888888888888888888888888888888888888888888888888*s*t",
                                       {{Rational(0), Rational(1)}, {Rational(0), Rational(1)}})),
             std::make_pair(std::string("invalid_domain"), std::string("scene.domain")));
+  // Empty and reversed intervals.
+  for (const auto& bad : std::vector<std::vector<std::pair<Rational, Rational>>>{
+           {{Rational(1), Rational(1)}, {Rational(0), Rational(1)}},
+           {{Rational(0), Rational(1)}, {Rational(2), Rational(-1)}}}) {
+    EXPECT_EQ(code_and_field(parametric("s", "t", "s*t", bad)),
+              std::make_pair(std::string("invalid_domain"), std::string("scene.domain")));
+  }
   // A denominator vanishing in the domain.
   EXPECT_EQ(
       code_and_field(parametric("1/s", "t", "s*t", {{Rational(-1), Rational(1)}, {Rational(0), Rational(1)}})).first,

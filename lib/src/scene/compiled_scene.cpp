@@ -307,10 +307,12 @@ std::string SceneGlslWriter::node(std::uint32_t index, const std::string& p) {
   return n.operations->emit(*this, n, p);
 }
 
-void SceneGlslWriter::require_helper(const std::string& id, const std::string& text) {
+void SceneGlslWriter::require_helper(const std::string& id, const std::string& text,
+                                     const std::vector<std::string>& suffixes) {
   if (helper_ids_.insert(id).second) {
     helpers_ += text;
     globals_.insert(prefix_ + "_" + id);
+    for (const std::string& suffix : suffixes) globals_.insert(prefix_ + "_" + id + suffix);
   }
 }
 

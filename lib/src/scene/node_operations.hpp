@@ -195,8 +195,9 @@ class SceneGlslWriter {
   std::string node(std::uint32_t index, const std::string& p);
   /// Emits n's child i at point expression p.
   std::string child(const CompiledNode& n, std::size_t i, const std::string& p) { return node(n.children[i], p); }
-  /// Adds helper `id` (its text defines PREFIX_id) once, in order of first use.
-  void require_helper(const std::string& id, const std::string& text);
+  /// Adds helper `id` (its text defines PREFIX_id, and PREFIX_id + each of
+  /// `suffixes`) once, in order of first use.
+  void require_helper(const std::string& id, const std::string& text, const std::vector<std::string>& suffixes = {});
   /// A new point variable `vec3 pK = expression;  // comment`; returns pK.
   std::string point(const std::string& expression, const std::string& comment);
   /// A new value variable `float dK = expression;  // comment`; returns dK.

@@ -6,6 +6,7 @@
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 #include "implicitizer/implicitization/parametrization.hpp"
+#include "implicitizer/implicitization/patch_domain.hpp"
 #include "implicitizer/polynomial/parser.hpp"
 #include "implicitizer/polynomial/ring.hpp"
 #include "implicitizer/scene/primitives.hpp"
@@ -16,30 +17,6 @@
 namespace implicitizer {
 namespace {
 
-// The largest F ≤ q and the smallest F ≥ q (F = float or double): mpq_get_d truncates
-// toward zero, so step once or twice to the right side. Beyond F's range the answer is
-// ±infinity (the caller refuses it); mpq_class(±inf) would raise SIGFPE in GMP, which
-// the request fuzzer found with a patch whose box exceeds float's range.
-template <typename F>
-F round_down(const Rational& q) {
-  const mpq_class exact = to_mpq(q);
-  F x = static_cast<F>(exact.get_d());
-  while (std::isfinite(x) && mpq_class(static_cast<double>(x)) > exact) {
-    x = std::nextafter(x, -std::numeric_limits<F>::infinity());
-  }
-  return x;
-}
-
-template <typename F>
-F round_up(const Rational& q) {
-  const mpq_class exact = to_mpq(q);
-  F x = static_cast<F>(exact.get_d());
-  while (std::isfinite(x) && mpq_class(static_cast<double>(x)) < exact) {
-    x = std::nextafter(x, std::numeric_limits<F>::infinity());
-  }
-  return x;
-}
-
 // Rethrows an InputError of a sub-field ("x", "domain", or "" for the whole text) as
 // one of the leaf at `field`.
 InputError at_field(const InputError& e, const std::string& field, const std::string& sub) {
@@ -49,25 +26,61 @@ InputError at_field(const InputError& e, const std::string& field, const std::st
 
 }  // namespace
 
-std::string trim_glsl(const std::string& prefix) {
-  return "float " + prefix +
-         "_trim(vec3 p, vec3 lo, vec3 hi, float d) {\n"
-         "  vec3 q = max(lo - p, p - hi);\n"
-         "  vec3 m = max(q, 0.0);\n"
-         "  return max(abs(d), " +
-         glsl_length("m") +
-         ");\n"
-         "}\n";
-}
-
 namespace {
 
 // A leaf's implicit equation: parsed (kind implicit) or implicitized (kind
-// parametric), with the bounds of the patch when the source gives a domain.
+// parametric), with the patch it stands for (parametric only).
 struct LeafEquation {
   Polynomial f{space_ring()};
-  std::optional<PatchBounds> bounds;
+  struct Patch {
+    Parametrization parametrization;
+    std::optional<ParameterDomain> domain;  ///< none: the whole parameter plane
+    PatchBounds bounds;                     ///< a box containing X(domain), in x, y, z
+  };
+  std::optional<Patch> patch;
 };
+
+// The requested domain, checked: one interval per parameter, each with lo < hi (a
+// degenerate interval makes a curve or a point, not a patch).
+ParameterDomain checked_domain(const PolynomialLeafSource& source, const Parametrization& parametrization) {
+  const RingPtr& ring = parametrization.parameter_ring;
+  if (source.domain.size() != ring->num_variables()) {
+    throw InputError("invalid_domain", "the domain has " + std::to_string(source.domain.size()) +
+                                           " intervals, the parametrization " + std::to_string(ring->num_variables()) +
+                                           " parameters")
+        .in_field("domain");
+  }
+  for (std::size_t j = 0; j < source.domain.size(); ++j) {
+    const auto& [lo, hi] = source.domain[j];
+    if (!(lo < hi)) {
+      throw InputError("invalid_domain", "the interval of " + ring->variables()[j] + " is [" + to_string(lo) + ", " +
+                                             to_string(hi) + "]: its lower end must be below its upper end")
+          .in_field("domain");
+    }
+  }
+  return ParameterDomain{source.domain};
+}
+
+// The patch of `source`: its domain (the default one when the source names none,
+// patch_domain.hpp) and the exact bound of its image (a curve's in the plane z = 0).
+LeafEquation::Patch leaf_patch(const PolynomialLeafSource& source, Parametrization parametrization,
+                               const Budget& budget) {
+  LeafEquation::Patch patch;
+  if (source.domain.empty()) {
+    DefaultPatchDomain d = default_patch_domain(parametrization, budget);
+    if (!d.whole_plane) patch.domain = std::move(d.domain);
+    patch.bounds = std::move(d.bounds);
+  } else {
+    patch.domain = checked_domain(source, parametrization);
+    patch.bounds = bound_patch(parametrization, *patch.domain, budget);
+  }
+  if (patch.bounds.lo.size() == 2) {
+    patch.bounds.lo.emplace_back(0);
+    patch.bounds.hi.emplace_back(0);
+  }
+  patch.parametrization = std::move(parametrization);
+  return patch;
+}
 
 // A plane curve's equation in x, y moved into the ring x, y, z (where it is the
 // cylinder over the curve).
@@ -90,19 +103,10 @@ LeafEquation implicitize_leaf(const PolynomialLeafSource& source, const Budget& 
   } catch (const InputError& e) {
     throw at_field(e, field, "x");
   }
-  if (!source.domain.empty()) {
-    ParameterDomain domain;
-    domain.intervals = source.domain;
-    try {
-      out.bounds = bound_patch(parametrization, domain, budget);
-    } catch (const InputError& e) {
-      throw at_field(e, field, "domain");
-    }
-    // A curve lies in the plane z = 0.
-    if (dimension == 2) {
-      out.bounds->lo.emplace_back(0);
-      out.bounds->hi.emplace_back(0);
-    }
+  try {
+    out.patch = leaf_patch(source, parametrization, budget);
+  } catch (const InputError& e) {
+    throw at_field(e, field, "domain");
   }
   ImplicitizeParams params;
   params.budget = budget;
@@ -139,18 +143,10 @@ LeafEquation leaf_equation(NodeKind kind, const PolynomialLeafSource& source, co
   return out;
 }
 
-// A patch's box rounded outwards, in double and in float.
-struct TrimBox {
-  Vec3<double> lo, hi;
-  Vec3<float> lo_float, hi_float;
-};
-
-// The box that trims a patch; also pads `frame_box` around it when the source gives
-// no box of its own.
-TrimBox trim_box(const PatchBounds& bounds, const PolynomialLeafSource& source, SceneBox& frame_box,
-                 const std::string& field) {
-  // Pad by 1e-3 of the largest side so that the patch never lies on the frame's
-  // edge; a patch whose box is a point is not a surface piece.
+// The frame box fitted to a patch: its bound padded by 1e-3 of its largest side, so
+// that the patch never lies on the frame's edge. A patch whose bound is a point is
+// not a surface piece, and one beyond float's range cannot be stated in the GLSL.
+SceneBox fitted_box(const PatchBounds& bounds, const std::string& field) {
   Rational largest(0);
   for (std::size_t i = 0; i < 3; ++i) {
     const Rational side = bounds.hi[i] - bounds.lo[i];
@@ -160,23 +156,11 @@ TrimBox trim_box(const PatchBounds& bounds, const PolynomialLeafSource& source, 
     throw InputError("invalid_domain", "the domain's image is a single point").in_field(field + ".domain");
   }
   const Rational pad = largest / Rational(1000);
-  if (!source.box) {
-    for (std::size_t i = 0; i < 3; ++i) {
-      frame_box.lo[i] = bounds.lo[i] - pad;
-      frame_box.hi[i] = bounds.hi[i] + pad;
-    }
-  }
-  TrimBox box;
-  double* lo_d[3] = {&box.lo.x, &box.lo.y, &box.lo.z};
-  double* hi_d[3] = {&box.hi.x, &box.hi.y, &box.hi.z};
-  float* lo_f[3] = {&box.lo_float.x, &box.lo_float.y, &box.lo_float.z};
-  float* hi_f[3] = {&box.hi_float.x, &box.hi_float.y, &box.hi_float.z};
+  SceneBox box;
   for (std::size_t i = 0; i < 3; ++i) {
-    *lo_d[i] = round_down<double>(bounds.lo[i]);
-    *hi_d[i] = round_up<double>(bounds.hi[i]);
-    *lo_f[i] = round_down<float>(bounds.lo[i]);
-    *hi_f[i] = round_up<float>(bounds.hi[i]);
-    if (!std::isfinite(*lo_f[i]) || !std::isfinite(*hi_f[i])) {
+    box.lo[i] = bounds.lo[i] - pad;
+    box.hi[i] = bounds.hi[i] + pad;
+    if (!std::isfinite(round_down<float>(box.lo[i])) || !std::isfinite(round_up<float>(box.hi[i]))) {
       throw InputError("invalid_domain", "the patch's box exceeds float's range").in_field(field + ".domain");
     }
   }
@@ -223,13 +207,16 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
                                      SdfMode mode, const Budget& budget, const std::string& field, int dimension) {
   const LeafEquation equation = leaf_equation(kind, source, budget, field, dimension);
   SceneBox frame_box = source.box ? *source.box : default_box;
-  std::optional<TrimBox> trim;
-  if (equation.bounds) trim = trim_box(*equation.bounds, source, frame_box, field);
+  if (equation.patch && !source.box) frame_box = fitted_box(equation.patch->bounds, field);
   if (dimension == 2) frame_box = curve_frame_box(frame_box);
+  // A patch over a bounded domain is trimmed to its cover; over the whole plane it is,
+  // up to its closure, all of its algebraic surface in the fitted box (docs/sdf.md,
+  // "Patches"), which the frame clips as for an implicit leaf.
+  const bool bounded_patch = equation.patch && equation.patch->domain;
   PolynomialLeaf leaf(equation.f);
   Enclosure shape;
   try {
-    shape = resolve_shape(source, equation.f, frame_box, equation.bounds.has_value(), dimension, budget);
+    shape = resolve_shape(source, equation.f, frame_box, bounded_patch, dimension, budget);
     const Polynomial f = shape.negate ? -equation.f : equation.f;
     if (mode == SdfMode::safe) {
       leaf.safe_ = SafeSdf::build(f, frame_box, budget, shape.shape);
@@ -240,18 +227,14 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
     // invalid_box concerns the box; degree_too_high the equation.
     throw at_field(e, field, e.code() == "invalid_box" ? "box" : (kind == NodeKind::implicit ? "equation" : ""));
   }
-  // A solid asked of a patch is the solid F <= 0 in its box: nothing to trim.
-  if (shape.shape == SdfShape::solid) trim.reset();
   leaf.frame_box_ = frame_box;
   leaf.shape_ = shape.shape;
   leaf.shape_reason_ = shape.reason;
   leaf.negated_ = shape.negate;
-  if (trim) {
-    leaf.trimmed_ = true;
-    leaf.lo_ = trim->lo;
-    leaf.hi_ = trim->hi;
-    leaf.lo_float_ = trim->lo_float;
-    leaf.hi_float_ = trim->hi_float;
+  // A solid asked of a patch is the solid F <= 0 in its box: nothing to trim.
+  if (bounded_patch && shape.shape == SdfShape::sheet) {
+    leaf.cover_ =
+        PatchCover::build(equation.patch->parametrization, *equation.patch->domain, equation.f, frame_box, budget);
   }
   return leaf;
 }
@@ -268,9 +251,9 @@ void classify_leaf(NodeCompilation& c) { c.out.node_class = c.safe() ? NodeClass
 NodeBox bound_leaf(const NodeCompilation& c) {
   const PolynomialLeaf& leaf = c.leaves[static_cast<std::size_t>(c.out.leaf)];
   if (leaf.trimmed()) {
-    // t ≥ 0 everywhere: the solid {t ≤ 0} is the sheet, inside the trimming box.
-    const Vec3<float>& l = leaf.trim_lo();
-    const Vec3<float>& h = leaf.trim_hi();
+    // t ≥ 0 everywhere: the solid {t ≤ 0} is the sheet, inside the cover's boxes.
+    const Vec3<float> l = leaf.trim_lo();
+    const Vec3<float> h = leaf.trim_hi();
     return {{l.x, l.y, l.z}, {h.x, h.y, h.z}, false};
   }
   // Beyond kFarField (u = (p − c)·s, max norm) both modes return the positive box
@@ -300,9 +283,9 @@ std::string emit_leaf(SceneGlslWriter& w, const CompiledNode& n, const std::stri
   w.require_helper(id, leaf.to_glsl(w.prefix() + "_" + id));
   const std::string d = w.value(w.call(id, p), SceneGlslWriter::type(n));
   if (!leaf.trimmed()) return d;
-  w.require_helper("trim", trim_glsl(w.prefix()));
-  return w.value(w.call("trim", p + ", " + glsl_vec3(leaf.trim_lo()) + ", " + glsl_vec3(leaf.trim_hi()) + ", " + d),
-                 "trimmed to the patch's box");
+  const std::string cover = id + "_cover";
+  w.require_helper(cover, leaf.cover()->to_glsl(w.prefix() + "_" + cover), PatchCover::glsl_suffixes());
+  return w.value(w.call(cover, p + ", " + d), "trimmed to the patch's cover");
 }
 
 }  // namespace

@@ -28,4 +28,12 @@ Rational to_rational(const Integer& z);
 /// Prints `q` as `n` or `n/d` (lowest terms, sign on the numerator).
 std::string to_string(const Rational& q);
 
+/// The largest F <= q (F = float or double): a bound rounded outwards. Beyond F's
+/// range the answer is ±infinity; the caller refuses it.
+template <typename F>
+F round_down(const Rational& q);
+/// The smallest F >= q (F = float or double); +infinity beyond F's range.
+template <typename F>
+F round_up(const Rational& q);
+
 }  // namespace implicitizer

@@ -9,9 +9,9 @@
 /// as asked; automatic by decide_enclosure() (enclosure.hpp) on the box the value is
 /// clipped to (the frame's cube c ± h; its x–y square for a curve): solid, with F
 /// negated when F < 0 on the boundary, iff the zero set provably stays off the
-/// boundary and encloses a region; else sheet. A parametric leaf with a domain is a
-/// sheet under automatic (the patch, trimmed below); asked for a solid it is the solid
-/// F <= 0 in its frame box, untrimmed.
+/// boundary and encloses a region; else sheet. A parametric leaf over a bounded
+/// domain is a sheet under automatic (the patch, trimmed below); asked for a solid it
+/// is the solid F <= 0 in its frame box, untrimmed.
 ///
 /// Curves (SceneParams::dimension 2). The equation is F(x, y) (a z in it is
 /// `unknown_variable`), or the implicitization of a parametrization with x and y only;
@@ -21,19 +21,23 @@
 /// space from (x, y, 0) to the cylinder is the planar distance to the curve, so both
 /// modes keep their meaning (docs/sdf.md, "Curves").
 ///
-/// Trimming. A parametric leaf with a parameter domain D is the patch X(D), not the
-/// whole algebraic surface: bound_patch() (patch_bounds.hpp) gives an exact box B ⊇ X(D)
-/// (its corners rounded outwards to float), the frame box is B padded by 1e-3 of its
-/// largest side on every side, and the leaf's value is the unsigned trimmed sheet
-///     t(p) = max(|d(p)|, |max(lo − p, p − hi, 0)|),
-/// the second term being the distance from p to B (0 inside). Its zero set is exactly
-/// {F = 0} ∩ B: t = 0 iff d = 0 and p ∈ B. It is a lower bound of the distance to
-/// Z ∩ B whenever |d| is one of the distance to Z = {F = 0}, because
-/// dist(p, Z ∩ B) ≥ max(dist(p, Z), dist(p, B)). A trimmed leaf is a sheet: it has
-/// no inside (t ≥ 0 everywhere), so it is meant for union and intersection; as the
-/// subtrahend of a difference it removes nothing. B contains the patch but may
-/// contain more of Z (other sheets of the surface, or the rest of a piece whose
-/// image is not box-shaped): trimming to a box is what a box can do.
+/// Patches. A parametric leaf is the patch X(D) of its domain D (the source's, else
+/// the default domain of patch_domain.hpp: the whole parameter plane when the
+/// parametrization is bounded on it, else [0, 1]^m). Without a box of its own the
+/// frame box is fitted to X(D): the exact bound of bound_patch() padded by 1e-3 of its
+/// largest side. Over a bounded domain a sheet is trimmed to a PatchCover
+/// (patch_cover.hpp), boxes B_k with X(D) ⊂ ∪ B_k, and its value is
+///     t(p) = max(|d(p)|, D(p)),  D(p) <= dist(p, ∪ B_k),
+/// computed by PatchCover::distance_lower_bound. It is 0 on X(D) (d = 0 there and
+/// p lies in a box) and a lower bound of the distance to X(D) whenever |d| is one of
+/// the distance to Z = {F = 0} (safe mode), because X(D) ⊂ Z ∩ ∪ B_k gives
+/// dist(p, X(D)) >= max(dist(p, Z), dist(p, ∪ B_k)). Points of Z farther than 0.1·h
+/// from X(D) get values above 0.01·h (patch_cover.hpp says why). A trimmed leaf has
+/// no inside (t >= 0 everywhere): it is meant for union and intersection; as the
+/// subtrahend of a difference it removes nothing. Over the whole plane X(D) is, up to
+/// its closure, all of Z in the fitted box (a closed surface): nothing is trimmed, the
+/// frame box clips as for an implicit leaf and auto may pick a solid (docs/sdf.md,
+/// "Patches").
 
 #include <array>
 #include <optional>
@@ -42,6 +46,7 @@
 #include "implicitizer/core/budget.hpp"
 #include "implicitizer/implicitization/patch_bounds.hpp"
 #include "implicitizer/polynomial/polynomial.hpp"
+#include "implicitizer/scene/patch_cover.hpp"
 #include "implicitizer/scene/scene_node.hpp"
 #include "implicitizer/scene/vec3.hpp"
 #include "implicitizer/sdf/fast_sdf.hpp"
@@ -52,23 +57,14 @@
 
 namespace implicitizer {
 
-/// The trimmed sheet max(|d|, distance from p to [lo, hi]), the distance being
-/// |max(lo − p, p − hi, 0)| component by component.
-template <typename T>
-T trim_to_box(const Vec3<T>& p, const Vec3<T>& lo, const Vec3<T>& hi, T d) {
-  const Vec3<T> q{std::max(lo.x - p.x, p.x - hi.x), std::max(lo.y - p.y, p.y - hi.y), std::max(lo.z - p.z, p.z - hi.z)};
-  return std::max(std::abs(d), length(max(q, T(0))));
-}
-/// `float PREFIX_trim(vec3 p, vec3 lo, vec3 hi, float d)`.
-std::string trim_glsl(const std::string& prefix);
-
 /// One compiled polynomial leaf.
 class PolynomialLeaf {
  public:
   /// Builds the leaf of `source` (kind implicit or parametric; see scene_node.hpp)
   /// under `budget`: parses (ring x, y, z), implicitizes (parametric), bounds the
-  /// patch (with a domain) and compiles the distance of `mode` in the leaf's box
-  /// (source.box, else `default_box`, else, trimmed, the padded patch box).
+  /// patch over its domain (parametric), compiles the distance of `mode` in the
+  /// leaf's box (source.box, else, parametric, the padded patch box, else
+  /// `default_box`) and covers the patch (a sheet over a bounded domain).
   /// Errors are InputError with field `field` + ".equation" / ".x" / ".domain" / … :
   /// parse errors, `constant_polynomial`, `invalid_box`, `degree_too_high` (safe),
   /// `invalid_domain`, `unbounded_patch`, `no_single_equation` (the image is not a
@@ -83,22 +79,17 @@ class PolynomialLeaf {
   template <typename T>
   T evaluate(const Vec3<T>& p) const {
     const T d = fast_ ? fast_->evaluate<T>(p.x, p.y, p.z) : safe_->evaluate<T>(p.x, p.y, p.z);
-    if (!trimmed_) return d;
-    if constexpr (sizeof(T) == sizeof(float)) {
-      return trim_to_box(p, lo_float_, hi_float_, d);
-    } else {
-      return trim_to_box(p, Vec3<T>{lo_.x, lo_.y, lo_.z}, Vec3<T>{hi_.x, hi_.y, hi_.z}, d);
-    }
+    return cover_ ? cover_->distance_lower_bound(p, d) : d;
   }
 
   /// `float FUNCTION(vec3 p)`: the distance of F = 0 before trimming (the scene's
-  /// GLSL applies PREFIX_trim with trim_lo/trim_hi when trimmed()).
+  /// GLSL applies the cover's function when trimmed()).
   std::string to_glsl(const std::string& function) const {
     return fast_ ? fast_->to_glsl(function) : safe_->to_glsl(function);
   }
 
-  /// Whether the leaf is a trimmed sheet.
-  bool trimmed() const { return trimmed_; }
+  /// Whether the leaf is a patch trimmed to its cover.
+  bool trimmed() const { return cover_.has_value(); }
   /// The shape the leaf's value describes (never automatic: what was picked).
   SdfShape shape() const { return shape_; }
   /// Why that shape: "asked", or decide_enclosure()'s reason under automatic.
@@ -106,10 +97,12 @@ class PolynomialLeaf {
   /// Whether the value is that of −F (a solid whose F is negative on its box's
   /// boundary: the enclosed region is then where F > 0).
   bool negated() const { return negated_; }
-  /// The trimming box's corners as floats (rounded outwards from the exact bound).
-  const Vec3<float>& trim_lo() const { return lo_float_; }
+  /// The cover a trimmed leaf is cut to (null when not trimmed).
+  const PatchCover* cover() const { return cover_ ? &*cover_ : nullptr; }
+  /// The box around the cover's boxes, float corners (trimmed leaves only).
+  Vec3<float> trim_lo() const { return cover_->lo(); }
   /// See trim_lo().
-  const Vec3<float>& trim_hi() const { return hi_float_; }
+  Vec3<float> trim_hi() const { return cover_->hi(); }
   /// The implicit equation F (in x, y, z; a curve's has no z), as given or
   /// implicitized, before any negation (negated()).
   const Polynomial& equation() const { return equation_; }
@@ -128,9 +121,7 @@ class PolynomialLeaf {
   SdfShape shape_ = SdfShape::solid;
   std::string shape_reason_;
   bool negated_ = false;
-  bool trimmed_ = false;
-  Vec3<double> lo_, hi_;
-  Vec3<float> lo_float_, hi_float_;
+  std::optional<PatchCover> cover_;
 };
 
 }  // namespace implicitizer

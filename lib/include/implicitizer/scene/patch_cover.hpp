@@ -1,0 +1,176 @@
+#pragma once
+/// \file
+/// Boxes covering a patch X(D): what trims a parametric leaf to the patch its request
+/// names (docs/sdf.md, "Patches").
+///
+/// Construction. A quadtree over the parameter box D (a binary tree for curves) whose
+/// nodes carry exact boxes of their sub-patches (bound_patch() on the sub-domain: the
+/// rational Bézier hull, patch_bounds.hpp). A node is a leaf once its box is small
+/// (largest side <= tolerance·h, h the frame box's largest half side) or once it is
+/// shown not to reach any far cell: a cell of space that may hold a point of the
+/// algebraic surface Z = {F = 0} farther than reach·h from X(D). Whether a node's
+/// box, widened by margin·h, reaches a far cell is asked of a search that subdivides
+/// cells of that box (centre c, half diagonal r), stopping at the first far cell, and
+/// drops a cell when
+///   - the safe bound (safe_sdf.hpp, on a box enlarged by h/2 so that its faces do
+///     not clip it) proves dist(c, Z) > r: the cell holds no point of Z; or
+///   - a sample point of X(D) lies within reach·h − r of c: every point of the cell
+///     is within reach·h of X(D) (the sample is a subset of X(D), so a sparse sample
+///     only costs work, never correctness);
+/// a cell still undecided at half diagonal <= resolution·h is far (and remembered:
+/// later queries check the far cells found so far first). Both drops are proofs (up
+/// to the double rounding of the sample points, covered by a slack), so:
+/// a point q of Z in the frame box within margin·h of a leaf box B that is not small
+/// is in no far cell, hence within reach·h of X(D). When the surface's safe bound
+/// cannot be built (degree_too_high) only the second drop applies: the cover is then
+/// a uniform refinement to the tolerance near every part of Z.
+///
+/// Consequence (the requirement, with the default parameters): let q be a
+/// point of Z in the frame box farther than 0.1·h from X(D). If q were within 0.01·h
+/// of a leaf box B, either B is small (diagonal <= √3/20·h < 0.0867·h, and B holds a
+/// point of X(D), so q is within 0.0967·h of X(D)) or q is within reach·h = 0.09·h of
+/// X(D): both false. So the distance to the union of the leaf boxes, D(p), exceeds
+/// 0.01·h at q, and max(|d|, D(p)) does too. A leaf count cap (max_leaves) can stop
+/// the refinement first; stats().unresolved then says how many leaves are neither
+/// small nor proven, and stats().tolerance_reached how large the largest is.
+///
+/// Evaluation. The leaves, in quadtree order, are grouped in clusters of
+/// cluster_size (default ⌈√leaves⌉) consecutive leaves (the last one padded by repeating its last leaf),
+/// each with the box around its leaves. distance_lower_bound() walks the clusters,
+/// opens only those closer than the best leaf so far and returns as soon as a leaf is
+/// within |d|. Boxes are stored rounded outwards (float and double; corners beyond
+/// float's range clamped to ±FLT_MAX, which only shortens distances), squared
+/// distances are computed with each component clamped to 1e18 (no overflow; a
+/// smaller distance), and the final square root is multiplied by 1 − 2^−17 (float;
+/// 1 − 2^−46 for double), more than the relative rounding of the few operations
+/// involved, so the result is at most the true distance to the union of the boxes.
+/// to_glsl() prints the same steps.
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "implicitizer/core/budget.hpp"
+#include "implicitizer/implicitization/parametrization.hpp"
+#include "implicitizer/implicitization/patch_bounds.hpp"
+#include "implicitizer/polynomial/polynomial.hpp"
+#include "implicitizer/scene/vec3.hpp"
+#include "implicitizer/sdf/scene_frame.hpp"
+
+namespace implicitizer {
+
+/// How finely build() covers a patch (lengths as fractions of h, the frame box's
+/// largest half side).
+struct PatchCoverParams {
+  double tolerance = 1.0 / 20;    ///< leaves whose largest side is at most tolerance·h are never split
+  double reach = 0.09;            ///< points of Z within reach·h of X(D) may lie near a leaf box
+  double margin = 0.0105;         ///< how close to a leaf box a far point must not come (0.01·h and slack)
+  double resolution = 0.01;       ///< the half diagonal at which the far-cell search stops subdividing
+  std::size_t max_leaves = 1024;  ///< the refinement stops splitting here
+  /// Leaves per cluster; 0: ⌈√leaves⌉, which balances the clusters every evaluation
+  /// visits against the leaves of a cluster it opens.
+  std::size_t cluster_size = 0;
+  std::size_t tightening_depth = 1;          ///< bound_patch()'s tightening per node box
+  std::size_t max_search_cells = 4'000'000;  ///< cells the far-cell search may visit (LimitExceeded beyond)
+};
+
+/// What build() did.
+struct PatchCoverStats {
+  std::size_t leaves = 0;           ///< leaf boxes
+  std::size_t clusters = 0;         ///< clusters of cluster_size leaves
+  std::size_t nodes = 0;            ///< quadtree nodes bounded (leaves and inner nodes)
+  std::size_t sample_points = 0;    ///< points of X(D) sampled for the far-cell search
+  std::size_t search_cells = 0;     ///< cells visited by the far-cell search
+  std::size_t far_cells = 0;        ///< cells that may hold far points of Z
+  bool proven_empty_cells = false;  ///< whether the safe bound was available to drop cells without Z
+  std::size_t unresolved = 0;       ///< leaves neither small nor proven away from far cells (the cap stopped them)
+  double tolerance_reached = 0;     ///< largest side / h of an unresolved leaf (0: none)
+};
+
+/// The boxes covering X(D), ready to evaluate in C++ and GLSL.
+class PatchCover {
+ public:
+  /// Covers X(`domain`) of `parametrization` (2 or 3 coordinates; a plane curve lies
+  /// in z = 0) for the surface `equation` F(x, y, z) (its implicit equation, in a
+  /// ring of three variables) trimmed inside `frame_box`. Preconditions: bound_patch()
+  /// succeeded on `domain` (no denominator vanishes there), every interval has lo < hi.
+  /// Throws LimitExceeded from `budget` (time, cancellation; size: sample points and
+  /// far cells count as terms) or when the search exceeds params.max_search_cells.
+  static PatchCover build(const Parametrization& parametrization, const ParameterDomain& domain,
+                          const Polynomial& equation, const SceneBox& frame_box, const Budget& budget = Budget(),
+                          const PatchCoverParams& params = PatchCoverParams());
+
+  /// max(|d|, D(p)) with D(p) <= the distance from p to the union of the leaf boxes
+  /// (the file comment's steps; float: the GLSL's arithmetic).
+  template <typename T>
+  T distance_lower_bound(const Vec3<T>& p, T d) const {
+    const Boxes<T>& b = boxes<T>();
+    const T ad = std::abs(d);
+    const T d2 = ad * ad;
+    T best = T(kFarSquared);
+    const std::size_t k = cluster_size_;
+    for (std::size_t c = 0; c < b.cluster_lo.size(); ++c) {
+      if (squared_distance(p, b.cluster_lo[c], b.cluster_hi[c]) < best) {
+        for (std::size_t j = c * k; j < (c + 1) * k; ++j) best = std::min(best, squared_distance(p, b.lo[j], b.hi[j]));
+        if (best <= d2) return ad;
+      }
+    }
+    return std::max(ad, std::sqrt(best) * b.shrink);
+  }
+
+  /// `float FUNCTION(vec3 p, float d)` with its constant arrays FUNCTION_lo, …,
+  /// computing distance_lower_bound<float>. Precondition: FUNCTION is a valid GLSL
+  /// identifier.
+  std::string to_glsl(const std::string& function) const;
+  /// The other global names to_glsl(FUNCTION) defines: FUNCTION + each suffix.
+  static std::vector<std::string> glsl_suffixes() { return {"_lo", "_hi", "_clo", "_chi", "_d2"}; }
+
+  /// What build() did.
+  const PatchCoverStats& stats() const { return stats_; }
+  /// The leaf boxes (padded to whole clusters), corners rounded outwards to float.
+  const std::vector<Vec3<float>>& leaf_lo() const { return float_.lo; }
+  /// See leaf_lo().
+  const std::vector<Vec3<float>>& leaf_hi() const { return float_.hi; }
+  /// The union of the leaf boxes' float corners (the box the trimmed leaf lies in).
+  Vec3<float> lo() const;
+  /// See lo().
+  Vec3<float> hi() const;
+
+  /// The starting value of the squared distance (finite, above any clamped square).
+  static constexpr double kFarSquared = 3.0e38;
+  /// Each component of a box distance is clamped to this before squaring.
+  static constexpr double kClamp = 1e18;
+
+ private:
+  template <typename T>
+  struct Boxes {
+    std::vector<Vec3<T>> lo, hi;                  // cluster_size_ per cluster
+    std::vector<Vec3<T>> cluster_lo, cluster_hi;  // one per cluster
+    T shrink = 1;
+  };
+
+  template <typename T>
+  static T squared_distance(const Vec3<T>& p, const Vec3<T>& lo, const Vec3<T>& hi) {
+    const Vec3<T> q{std::max(lo.x - p.x, p.x - hi.x), std::max(lo.y - p.y, p.y - hi.y),
+                    std::max(lo.z - p.z, p.z - hi.z)};
+    const Vec3<T> m = min(max(q, T(0)), T(kClamp));
+    return m.x * m.x + m.y * m.y + m.z * m.z;
+  }
+
+  template <typename T>
+  const Boxes<T>& boxes() const {
+    if constexpr (sizeof(T) == sizeof(float)) {
+      return float_;
+    } else {
+      return double_;
+    }
+  }
+
+  Boxes<float> float_;
+  Boxes<double> double_;
+  std::size_t cluster_size_ = 1;
+  PatchCoverStats stats_;
+};
+
+}  // namespace implicitizer

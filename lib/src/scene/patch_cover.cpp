@@ -1,0 +1,539 @@
+#include "implicitizer/scene/patch_cover.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <queue>
+#include <string>
+
+#include "implicitizer/core/errors.hpp"
+#include "implicitizer/sdf/polynomial_program.hpp"
+#include "implicitizer/sdf/safe_sdf.hpp"
+
+namespace implicitizer {
+namespace {
+
+const char* const kWhere = "patch cover";
+
+using V = Vec3<double>;
+
+// An axis-aligned box in double.
+struct Box {
+  V lo, hi;
+};
+
+bool overlaps(const Box& a, const Box& b) {
+  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y && a.lo.z <= b.hi.z &&
+         b.lo.z <= a.hi.z;
+}
+
+double component(const V& v, std::size_t i) { return i == 0 ? v.x : (i == 1 ? v.y : v.z); }
+double& component(V& v, std::size_t i) { return i == 0 ? v.x : (i == 1 ? v.y : v.z); }
+
+// The patch's coordinates in double, ξ_i/ω over the common denominator: for
+// sampling only (the sample's rounding is covered by a slack, see build()).
+class DoublePatch {
+ public:
+  explicit DoublePatch(const Parametrization& parametrization) {
+    for (const Polynomial& f : common_denominator_form(parametrization)) {
+      Form form;
+      for (std::size_t t = 0; t < f.num_terms(); ++t) {
+        form.coefficients.push_back(to_mpq(f.coefficient(t)).get_d());
+        form.exponents.push_back(f.exponents(t));
+      }
+      forms_.push_back(std::move(form));
+    }
+  }
+
+  V at(const std::vector<double>& parameters) const {
+    const double w = value(forms_[0], parameters);
+    V p{0, 0, 0};
+    for (std::size_t i = 1; i < forms_.size(); ++i) component(p, i - 1) = value(forms_[i], parameters) / w;
+    return p;
+  }
+
+ private:
+  struct Form {
+    std::vector<double> coefficients;
+    std::vector<std::vector<std::int32_t>> exponents;
+  };
+
+  static double value(const Form& f, const std::vector<double>& parameters) {
+    double sum = 0;
+    for (std::size_t t = 0; t < f.coefficients.size(); ++t) {
+      double term = f.coefficients[t];
+      for (std::size_t j = 0; j < parameters.size(); ++j) {
+        for (std::int32_t k = 0; k < f.exponents[t][j]; ++k) term *= parameters[j];
+      }
+      sum += term;
+    }
+    return sum;
+  }
+
+  std::vector<Form> forms_;
+};
+
+// Points in a uniform grid of buckets: answers "is a point within r of c?".
+class PointGrid {
+ public:
+  PointGrid(const std::vector<V>& points, double cell) : cell_(cell) {
+    lo_ = hi_ = points.front();
+    for (const V& p : points) {
+      for (std::size_t i = 0; i < 3; ++i) {
+        component(lo_, i) = std::min(component(lo_, i), component(p, i));
+        component(hi_, i) = std::max(component(hi_, i), component(p, i));
+      }
+    }
+    // At most 128 buckets per axis: a coarser grid costs time, never correctness.
+    for (std::size_t i = 0; i < 3; ++i) cell_ = std::max(cell_, (component(hi_, i) - component(lo_, i)) / 127);
+    for (std::size_t i = 0; i < 3; ++i) {
+      counts_[i] = static_cast<std::size_t>((component(hi_, i) - component(lo_, i)) / cell_) + 1;
+    }
+    std::vector<std::size_t> keys;
+    offsets_.assign(counts_[0] * counts_[1] * counts_[2] + 1, 0);
+    for (const V& p : points) {
+      keys.push_back(key(p));
+      ++offsets_[keys.back() + 1];
+    }
+    for (std::size_t k = 1; k < offsets_.size(); ++k) offsets_[k] += offsets_[k - 1];
+    points_.resize(points.size());
+    std::vector<std::size_t> next(offsets_.begin(), offsets_.end() - 1);
+    for (std::size_t i = 0; i < points.size(); ++i) points_[next[keys[i]]++] = points[i];
+  }
+
+  bool any_within(const V& c, double r) const {
+    if (r < 0) return false;
+    std::array<std::size_t, 3> first{}, last{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      const double lo = (component(c, i) - r - component(lo_, i)) / cell_;
+      const double hi = (component(c, i) + r - component(lo_, i)) / cell_;
+      if (hi < 0 || lo >= static_cast<double>(counts_[i])) return false;
+      first[i] = lo < 0 ? 0 : static_cast<std::size_t>(lo);
+      last[i] = std::min(counts_[i] - 1, static_cast<std::size_t>(hi));
+    }
+    const double r2 = r * r;
+    for (std::size_t a = first[0]; a <= last[0]; ++a) {
+      for (std::size_t b = first[1]; b <= last[1]; ++b) {
+        for (std::size_t k = first[2]; k <= last[2]; ++k) {
+          const std::size_t bucket = (a * counts_[1] + b) * counts_[2] + k;
+          for (std::size_t j = offsets_[bucket]; j < offsets_[bucket + 1]; ++j) {
+            const V d = points_[j] - c;
+            if (dot(d, d) <= r2) return true;
+          }
+        }
+      }
+    }
+    return false;
+  }
+
+ private:
+  std::size_t index(const V& p, std::size_t i) const {
+    const double x = (component(p, i) - component(lo_, i)) / cell_;
+    return std::min(counts_[i] - 1, static_cast<std::size_t>(std::max(0.0, x)));
+  }
+  std::size_t key(const V& p) const { return (index(p, 0) * counts_[1] + index(p, 1)) * counts_[2] + index(p, 2); }
+
+  double cell_;
+  V lo_, hi_;
+  std::array<std::size_t, 3> counts_{};
+  std::vector<std::size_t> offsets_;
+  std::vector<V> points_;
+};
+
+// Points of X(D) on a grid of D, refined (up to about 2^20 points) until
+// neighbouring points are at most `spacing` apart: the far-cell search then finds
+// a sample point near every point of the patch without descending far.
+std::vector<V> sample_patch(const Parametrization& parametrization, const ParameterDomain& domain, double spacing,
+                            const Budget& budget) {
+  const DoublePatch patch(parametrization);
+  const std::size_t m = domain.intervals.size();
+  std::vector<std::pair<double, double>> range;
+  for (const auto& [lo, hi] : domain.intervals) range.emplace_back(to_mpq(lo).get_d(), to_mpq(hi).get_d());
+  const std::size_t max_points = std::size_t{1} << 18;
+  for (std::size_t n = 16;; n *= 2) {
+    const std::size_t per_axis = n + 1;
+    const std::size_t total = m == 1 ? per_axis : per_axis * per_axis;
+    std::vector<V> points(total);
+    std::vector<double> parameters(m);
+    for (std::size_t index = 0; index < total; ++index) {
+      if (index % 4096 == 0) budget.check(kWhere);
+      std::size_t rest = index;
+      for (std::size_t j = m; j-- > 0;) {
+        const std::size_t k = rest % per_axis;
+        rest /= per_axis;
+        const double u = static_cast<double>(k) / static_cast<double>(n);
+        parameters[j] = k == n ? range[j].second : range[j].first + u * (range[j].second - range[j].first);
+      }
+      points[index] = patch.at(parameters);
+    }
+    double gap = 0;
+    for (std::size_t index = 0; index < total; ++index) {
+      const std::size_t k = index % per_axis;
+      if (k + 1 < per_axis) gap = std::max(gap, length(points[index + 1] - points[index]));
+      if (m == 2 && index + per_axis < total) gap = std::max(gap, length(points[index + per_axis] - points[index]));
+    }
+    const std::size_t next = m == 1 ? 2 * n + 1 : (2 * n + 1) * (2 * n + 1);
+    if (!(gap > spacing) || next > max_points) return points;
+  }
+}
+
+// The far cells: boxes that may hold a point of Z farther than `reach` from X(D)
+// (the file comment of patch_cover.hpp). Searched lazily, one query box at a time,
+// stopping at the first far cell found; the far cells found are kept (indexed by a
+// coarse grid over the search region) and answer later queries first, since the
+// children of a node that reached a far cell often reach it too.
+class FarCellSearch {
+ public:
+  FarCellSearch(const Box& region, const std::optional<SafeSdf>& safe, const PointGrid& sample, double reach,
+                double resolution, const Budget& budget, const PatchCoverParams& params, PatchCoverStats& stats)
+      : region_(region),
+        safe_(safe),
+        sample_(sample),
+        reach_(reach),
+        resolution_(resolution),
+        budget_(budget),
+        params_(params),
+        stats_(stats) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      const double side = component(region.hi, i) - component(region.lo, i);
+      counts_[i] = side > 0 ? kBuckets : 1;
+      cell_[i] = side > 0 ? side / kBuckets : 1;
+    }
+    buckets_.resize(counts_[0] * counts_[1] * counts_[2]);
+  }
+
+  // Whether `box` may hold a far point (within the region).
+  bool reaches_far(const Box& box) {
+    Box query = box;
+    for (std::size_t i = 0; i < 3; ++i) {
+      component(query.lo, i) = std::max(component(query.lo, i), component(region_.lo, i));
+      component(query.hi, i) = std::min(component(query.hi, i), component(region_.hi, i));
+      if (component(query.lo, i) > component(query.hi, i)) return false;
+    }
+    bool known = false;
+    for_each_bucket(query, [&](std::size_t bucket) {
+      for (std::size_t c : buckets_[bucket]) known = known || overlaps(cells_[c], query);
+    });
+    return known || search(query);
+  }
+
+ private:
+  static constexpr std::size_t kBuckets = 32;
+
+  // Bisects cells of `query` along their longest side; true at the first cell it
+  // can neither prove empty of Z nor within `reach` of the sample.
+  bool search(const Box& query) {
+    std::vector<Box> stack{query};
+    while (!stack.empty()) {
+      const Box cell = stack.back();
+      stack.pop_back();
+      if (++stats_.search_cells % 1024 == 0) budget_.check(kWhere);
+      if (stats_.search_cells > params_.max_search_cells) {
+        throw LimitExceeded(Limit::size, std::string("size limit exceeded during ") + kWhere + ": more than " +
+                                             std::to_string(params_.max_search_cells) + " cells searched");
+      }
+      const V centre = (cell.lo + cell.hi) * 0.5;
+      const double r = length(cell.hi - cell.lo) * 0.5;
+      if (safe_ && std::abs(safe_->evaluate<double>(centre.x, centre.y, centre.z)) > r) continue;
+      if (sample_.any_within(centre, reach_ - r)) continue;
+      if (r <= resolution_) {
+        cells_.push_back(cell);
+        for_each_bucket(cell, [&](std::size_t bucket) { buckets_[bucket].push_back(cells_.size() - 1); });
+        stats_.far_cells = cells_.size();
+        return true;
+      }
+      std::size_t axis = 0;
+      for (std::size_t i = 1; i < 3; ++i) {
+        if (component(cell.hi, i) - component(cell.lo, i) > component(cell.hi, axis) - component(cell.lo, axis)) {
+          axis = i;
+        }
+      }
+      Box lower = cell, upper = cell;
+      component(lower.hi, axis) = component(upper.lo, axis) = component(centre, axis);
+      stack.push_back(upper);
+      stack.push_back(lower);
+    }
+    return false;
+  }
+
+  template <class F>
+  void for_each_bucket(const Box& box, F&& f) const {
+    std::array<std::size_t, 3> first{}, last{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      const double lo = (component(box.lo, i) - component(region_.lo, i)) / cell_[i];
+      const double hi = (component(box.hi, i) - component(region_.lo, i)) / cell_[i];
+      first[i] = std::min(counts_[i] - 1, static_cast<std::size_t>(std::max(0.0, lo)));
+      last[i] = std::min(counts_[i] - 1, static_cast<std::size_t>(std::max(0.0, hi)));
+    }
+    for (std::size_t a = first[0]; a <= last[0]; ++a) {
+      for (std::size_t b = first[1]; b <= last[1]; ++b) {
+        for (std::size_t k = first[2]; k <= last[2]; ++k) f((a * counts_[1] + b) * counts_[2] + k);
+      }
+    }
+  }
+
+  Box region_;
+  const std::optional<SafeSdf>& safe_;
+  const PointGrid& sample_;
+  double reach_, resolution_;
+  const Budget& budget_;
+  const PatchCoverParams& params_;
+  PatchCoverStats& stats_;
+  std::vector<Box> cells_;
+  std::array<std::size_t, 3> counts_{};
+  std::array<double, 3> cell_{};
+  std::vector<std::vector<std::size_t>> buckets_;
+};
+
+// One node of the quadtree: a sub-domain and the box of its sub-patch, corners
+// rounded outwards to float (the evaluated box).
+struct Node {
+  ParameterDomain domain;
+  Vec3<float> lo, hi;
+  std::vector<std::size_t> children;
+  float largest_side = 0;
+};
+
+Node make_node(const Parametrization& parametrization, ParameterDomain domain, const Budget& budget,
+               const PatchBoundsParams& bounds_params) {
+  const PatchBounds bounds = bound_patch(parametrization, domain, budget, bounds_params);
+  Node node{std::move(domain), {0, 0, 0}, {0, 0, 0}, {}, 0};
+  float* lo[3] = {&node.lo.x, &node.lo.y, &node.lo.z};
+  float* hi[3] = {&node.hi.x, &node.hi.y, &node.hi.z};
+  // Beyond float's range a corner is clamped to ±FLT_MAX: for every float point p
+  // the distance to the clamped box is at most the distance to the true one (equal
+  // when the box reaches beyond on one side only), and the GLSL can state it.
+  constexpr float kLargest = std::numeric_limits<float>::max();
+  for (std::size_t i = 0; i < bounds.lo.size(); ++i) {
+    *lo[i] = std::clamp(round_down<float>(bounds.lo[i]), -kLargest, kLargest);
+    *hi[i] = std::clamp(round_up<float>(bounds.hi[i]), -kLargest, kLargest);
+    node.largest_side = std::max(node.largest_side, *hi[i] - *lo[i]);
+  }
+  return node;
+}
+
+// The 2^m halves of a sub-domain (m = 1 or 2), lower halves first, the last
+// parameter fastest: consecutive leaves are neighbours in D (a Z-order).
+std::vector<ParameterDomain> split_domain(const ParameterDomain& domain) {
+  std::vector<ParameterDomain> out(1);
+  for (const auto& [lo, hi] : domain.intervals) {
+    const Rational middle = (lo + hi) / Rational(2);
+    std::vector<ParameterDomain> next;
+    for (const ParameterDomain& d : out) {
+      for (const auto& half : {std::make_pair(lo, middle), std::make_pair(middle, hi)}) {
+        ParameterDomain e = d;
+        e.intervals.push_back(half);
+        next.push_back(std::move(e));
+      }
+    }
+    out = std::move(next);
+  }
+  return out;
+}
+
+Box widened(const Vec3<float>& lo, const Vec3<float>& hi, double by) {
+  const V w{by, by, by};
+  return {V{lo.x, lo.y, lo.z} - w, V{hi.x, hi.y, hi.z} + w};
+}
+
+}  // namespace
+
+PatchCover PatchCover::build(const Parametrization& parametrization, const ParameterDomain& domain,
+                             const Polynomial& equation, const SceneBox& frame_box, const Budget& budget,
+                             const PatchCoverParams& params) {
+  PatchCover cover;
+  PatchCoverStats& stats = cover.stats_;
+  const bool plane_curve = parametrization.coordinates.size() == 2;
+  Box frame;
+  double h = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    component(frame.lo, i) = round_down<double>(frame_box.lo[i]);
+    component(frame.hi, i) = round_up<double>(frame_box.hi[i]);
+    h = std::max(h, (component(frame.hi, i) - component(frame.lo, i)) / 2);
+  }
+  if (plane_curve) frame.lo.z = frame.hi.z = 0;
+
+  // The safe bound of Z on the frame box widened by h/2: inside the frame its box
+  // term (the distance to the widened box's faces, >= h/2) never clips the bound
+  // for cells of half diagonal below h/2.
+  std::optional<SafeSdf> safe;
+  {
+    SceneBox wide = frame_box;
+    const Rational pad = to_rational(mpq_class(h / 2));
+    for (std::size_t i = 0; i < 3; ++i) {
+      wide.lo[i] = wide.lo[i] - pad;
+      wide.hi[i] = wide.hi[i] + pad;
+    }
+    try {
+      safe = SafeSdf::build(equation, wide, budget);
+    } catch (const InputError& e) {
+      if (e.code() != "degree_too_high") throw;
+    }
+  }
+  stats.proven_empty_cells = safe.has_value();
+
+  // Far cells. The sample points carry the rounding of a double evaluation of the
+  // parametrization (relative 1e-12 is far above it for the bench's degrees); the
+  // reach is shrunk by that much, relative to the patch's size.
+  const double reach = params.reach * h;
+  const std::vector<V> points = sample_patch(parametrization, domain, reach / 4, budget);
+  stats.sample_points = points.size();
+  double extent = 0;
+  for (const V& p : points) extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  const PointGrid sample(points, reach / 2);
+  const PatchBoundsParams coarse{0, PatchBoundsParams().max_denominator_depth};
+  const Node hull = make_node(parametrization, domain, budget, coarse);
+  // Every node box lies in the Bernstein hull of D (de Casteljau's control points
+  // are convex combinations of the parent's), so far cells beyond it cannot matter.
+  Box region = widened(hull.lo, hull.hi, 2 * params.margin * h);
+  for (std::size_t i = 0; i < 3; ++i) {
+    component(region.lo, i) = std::max(component(region.lo, i), component(frame.lo, i));
+    component(region.hi, i) = std::min(component(region.hi, i), component(frame.hi, i));
+  }
+  // A patch entirely outside the frame box has no far cells: nothing of Z is drawn.
+  const bool searched = region.lo.x <= region.hi.x && region.lo.y <= region.hi.y && region.lo.z <= region.hi.z;
+  FarCellSearch far(region, safe, sample, reach - 1e-12 * std::max(extent, h), params.resolution * h, budget, params,
+                    stats);
+
+  // The quadtree, largest boxes split first so that the leaf cap leaves a uniform
+  // refinement behind.
+  const PatchBoundsParams bounds_params{params.tightening_depth, PatchBoundsParams().max_denominator_depth};
+  std::vector<Node> nodes{make_node(parametrization, domain, budget, bounds_params)};
+  const auto smaller = [&](std::size_t a, std::size_t b) { return nodes[a].largest_side < nodes[b].largest_side; };
+  std::priority_queue<std::size_t, std::vector<std::size_t>, decltype(smaller)> open(smaller);
+  open.push(0);
+  std::size_t leaves = 1;
+  const std::size_t fan_out = std::size_t{1} << domain.intervals.size();
+  while (!open.empty()) {
+    budget.check(kWhere);
+    const std::size_t i = open.top();
+    open.pop();
+    if (nodes[i].largest_side <= params.tolerance * h) continue;
+    if (!searched || !far.reaches_far(widened(nodes[i].lo, nodes[i].hi, params.margin * h))) continue;
+    if (leaves + fan_out - 1 > params.max_leaves) {
+      ++stats.unresolved;
+      stats.tolerance_reached = std::max(stats.tolerance_reached, nodes[i].largest_side / h);
+      continue;
+    }
+    for (ParameterDomain& half : split_domain(nodes[i].domain)) {
+      nodes[i].children.push_back(nodes.size());
+      nodes.push_back(make_node(parametrization, std::move(half), budget, bounds_params));
+      open.push(nodes.size() - 1);
+    }
+    leaves += fan_out - 1;
+  }
+  stats.nodes = nodes.size();
+
+  // The leaves in depth-first order, clusters of cluster_size, the last one padded.
+  std::vector<std::size_t> order;
+  std::vector<std::size_t> stack{0};
+  while (!stack.empty()) {
+    const std::size_t i = stack.back();
+    stack.pop_back();
+    if (nodes[i].children.empty()) order.push_back(i);
+    for (auto c = nodes[i].children.rbegin(); c != nodes[i].children.rend(); ++c) stack.push_back(*c);
+  }
+  stats.leaves = order.size();
+  cover.cluster_size_ = params.cluster_size;
+  if (cover.cluster_size_ == 0) {
+    cover.cluster_size_ = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(order.size()))));
+  }
+  const std::size_t k = cover.cluster_size_;
+  while (order.size() % k != 0) order.push_back(order.back());
+  stats.clusters = order.size() / k;
+  for (std::size_t c = 0; c < stats.clusters; ++c) {
+    Vec3<float> clo = nodes[order[c * k]].lo, chi = nodes[order[c * k]].hi;
+    for (std::size_t j = c * k; j < (c + 1) * k; ++j) {
+      const Node& n = nodes[order[j]];
+      cover.float_.lo.push_back(n.lo);
+      cover.float_.hi.push_back(n.hi);
+      clo = {std::min(clo.x, n.lo.x), std::min(clo.y, n.lo.y), std::min(clo.z, n.lo.z)};
+      chi = {std::max(chi.x, n.hi.x), std::max(chi.y, n.hi.y), std::max(chi.z, n.hi.z)};
+    }
+    cover.float_.cluster_lo.push_back(clo);
+    cover.float_.cluster_hi.push_back(chi);
+  }
+  // Double boxes: the same float corners (exact in double), so both evaluations
+  // bound the distance to the same union.
+  const auto to_double = [](const std::vector<Vec3<float>>& v) {
+    std::vector<V> out;
+    for (const auto& p : v) out.push_back({p.x, p.y, p.z});
+    return out;
+  };
+  cover.double_.lo = to_double(cover.float_.lo);
+  cover.double_.hi = to_double(cover.float_.hi);
+  cover.double_.cluster_lo = to_double(cover.float_.cluster_lo);
+  cover.double_.cluster_hi = to_double(cover.float_.cluster_hi);
+  cover.float_.shrink = 1.0f - 0x1p-17f;
+  cover.double_.shrink = 1.0 - 0x1p-46;
+  return cover;
+}
+
+Vec3<float> PatchCover::lo() const {
+  Vec3<float> out = float_.cluster_lo.front();
+  for (const auto& p : float_.cluster_lo) out = {std::min(out.x, p.x), std::min(out.y, p.y), std::min(out.z, p.z)};
+  return out;
+}
+
+Vec3<float> PatchCover::hi() const {
+  Vec3<float> out = float_.cluster_hi.front();
+  for (const auto& p : float_.cluster_hi) out = {std::max(out.x, p.x), std::max(out.y, p.y), std::max(out.z, p.z)};
+  return out;
+}
+
+namespace {
+
+std::string vec3_literal(const Vec3<float>& v) {
+  return "vec3(" + format_glsl_float(v.x) + ", " + format_glsl_float(v.y) + ", " + format_glsl_float(v.z) + ")";
+}
+
+std::string vec3_array(const std::string& name, const std::vector<Vec3<float>>& values) {
+  const std::string n = std::to_string(values.size());
+  std::string out = "const vec3 " + name + "[" + n + "] = vec3[" + n + "](";
+  for (std::size_t i = 0; i < values.size(); ++i)
+    out += (i % 4 == 0 ? "\n  " : " ") + vec3_literal(values[i]) + (i + 1 < values.size() ? "," : "");
+  return out + ");\n";
+}
+
+}  // namespace
+
+std::string PatchCover::to_glsl(const std::string& function) const {
+  const std::string clusters = std::to_string(float_.cluster_lo.size());
+  const std::string k = std::to_string(cluster_size_);
+  const std::string f = function;
+  return "// The distance to the union of " + std::to_string(stats_.leaves) + " boxes covering the patch (" + clusters +
+         " clusters of " + k + "), rounded down; at least |d|.\n" + vec3_array(f + "_lo", float_.lo) +
+         vec3_array(f + "_hi", float_.hi) + vec3_array(f + "_clo", float_.cluster_lo) +
+         vec3_array(f + "_chi", float_.cluster_hi) + "float " + f +
+         "_d2(vec3 p, vec3 lo, vec3 hi) {\n"
+         "  vec3 m = min(max(max(lo - p, p - hi), 0.0), vec3(" +
+         format_glsl_float(static_cast<float>(kClamp)) +
+         "));\n"
+         "  return m.x * m.x + m.y * m.y + m.z * m.z;\n"
+         "}\n"
+         "float " +
+         f +
+         "(vec3 p, float d) {\n"
+         "  float ad = abs(d);\n"
+         "  float d2 = ad * ad;\n"
+         "  float best = " +
+         format_glsl_float(static_cast<float>(kFarSquared)) +
+         ";\n"
+         "  for (int c = 0; c < " +
+         clusters + "; ++c) {\n    if (" + f + "_d2(p, " + f + "_clo[c], " + f +
+         "_chi[c]) < best) {\n"
+         "      for (int j = c * " +
+         k + "; j < c * " + k + " + " + k + "; ++j) best = min(best, " + f + "_d2(p, " + f + "_lo[j], " + f +
+         "_hi[j]));\n"
+         "      if (best <= d2) return ad;\n"
+         "    }\n"
+         "  }\n"
+         "  return max(ad, sqrt(best) * " +
+         format_glsl_float(float_.shrink) +
+         ");\n"
+         "}\n";
+}
+
+}  // namespace implicitizer
