@@ -159,7 +159,7 @@ TEST(AnswerSdfRequest, AParametricCurveIsTrimmedToItsDomainAndFitted) {
   EXPECT_DOUBLE_EQ(answer.box[3], 1.002);
   EXPECT_DOUBLE_EQ(answer.box[4], 1.002);
   EXPECT_NEAR(parabola.scene.evaluate<float>({0.5F, 0.25F, 0.0F}), 0.0F, 1e-6F);  // on the arc
-  EXPECT_GT(parabola.scene.evaluate<float>({0.0F, 0.5F, 0.0F}), 0.1F);           // off it
+  EXPECT_GT(parabola.scene.evaluate<float>({0.0F, 0.5F, 0.0F}), 0.1F);            // off it
   // A curve's domain is one interval.
   r.domain = {"-1", "1", "0", "1"};
   const InputError e = input_error_of([&] { answer_sdf_request(r); });
