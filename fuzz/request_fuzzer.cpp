@@ -121,9 +121,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const InputError&) {
   }
   try {
-    // Names are validated and box numbers parsed in the answer, scenes compiled (a
-    // parametric leaf is implicitized under the budget).
+    // Names are validated, box and domain numbers parsed in the answer, scenes
+    // compiled (a parametric leaf, or a parametric request, is implicitized under the
+    // budget; a plane curve's z is empty).
     SdfRequest request = decode_sdf_request(body);
+    parse_field(request.implicit);
+    if (request.parametric) {
+      for (const std::string& coordinate : *request.parametric) parse_field(coordinate);
+    }
     request.timeout_seconds.reset();
     answer_within_budget("/v1/sdf", size,
                          [&request](const Budget& budget) { return answer_sdf_request(request, budget); });

@@ -10,8 +10,8 @@ commands:
   implicitize   the implicit equation of a parametrized surface
   groebner      the reduced Groebner basis of an ideal (or an elimination ideal)
   resultant     the resultant of two polynomials with respect to one variable
-  sdf           a GLSL distance estimate of the surface F(x,y,z) = 0
-  render        a PNG preview of a surface or scene (sphere tracing and friends)
+  sdf           a GLSL distance function of a surface, patch, curve or scene
+  render        a PNG preview of a surface, patch, curve or scene
   help [CMD]    this text, or the help of one command
   --version     the version
 
@@ -20,8 +20,11 @@ commands:
   implicitizer groebner [--vars x,y,z] [--order lex|grlex|grevlex] [--weights 1,2,3]
                [--eliminate s,t] [--timeout SECONDS] [--json] F [F ...]
   implicitizer resultant --var t [--timeout SECONDS] [--max-terms N] [--max-memory SIZE] [--json] F G
-  implicitizer sdf (--implicit E | --scene FILE.json) [--mode fast|safe] [--box x0,y0,z0,x1,y1,z1] [--name NAME] [--json]
-  implicitizer render (--implicit E | --x E --y E --z E [--params s,t] | --scene FILE.json)
+  implicitizer sdf (--implicit E | --x E --y E [--z E] [--params s,t] | --scene FILE.json)
+               [--shape auto|sheet|solid] [--domain s0,s1[,t0,t1]] [--mode fast|safe]
+               [--box x0,y0,z0,x1,y1,z1] [--name NAME] [--eval FILE] [--json]
+  implicitizer render (--implicit E | --x E --y E [--z E] [--params s,t] | --scene FILE.json)
+               [--shape ...] [--domain ...]
                [--method sphere|enhanced|newton|forward_newton|exact] [--mode fast|safe] [--size WxH]
                [--aa N] [--eye x,y,z] [--target x,y,z] [--box ...] [--timeout S] -o FILE.png [--json]
   implicitize and groebner also take --strategy auto|normal|sugar,
@@ -132,50 +135,75 @@ exit status: 0 success, 2 usage error, 3 invalid input (parse error, unknown
 variable), 5 time or size limit.
 )";
 
-const char* const kSdfHelp = R"(usage: implicitizer sdf (--implicit E | --scene FILE.json) [OPTIONS]
+const char* const kSdfHelp =
+    R"(usage: implicitizer sdf (--implicit E | --x E --y E [--z E] | --scene FILE.json) [OPTIONS]
 
-Prints GLSL source defining float NAME_sdf(vec3 p): a distance estimate of the
-surface E = 0, negative where E < 0, evaluated in fp32 in a frame centred and scaled
-to the scene box (docs/sdf.md), or of a scene (its uniforms declared above it, and
-only the helpers its nodes use). It compiles as GLSL ES 3.00 and as GLSL 330.
+Prints GLSL source defining float NAME_sdf(vec3 p) (vec2 p for a plane curve): the
+distance function of a surface E = 0, of a parametric patch X(D), of a plane curve
+or of a scene, evaluated in fp32 in a frame centred and scaled to the box
+(docs/sdf.md). Every input compiles as a scene: the uniforms and only the helpers
+its nodes use come before NAME_sdf. It compiles as GLSL ES 3.00 and as GLSL 330.
 
 options:
-  --implicit E          the polynomial F(x, y, z) (only x, y, z may occur)
-  --scene FILE.json     a scene instead: a JSON tree of primitives, implicit and
-                        parametric leaves and operators (docs/sdf.md, "Scenes");
-                        one of --implicit and --scene is required
+  --implicit E          the polynomial F(x, y, z); without z, F(x, y): a plane curve
+  --x E --y E [--z E]   a parametric surface, or without --z a plane curve, in its
+                        parameters (--params s,t: their order)
+  --scene FILE.json     a scene: a JSON tree of primitives, implicit and parametric
+                        leaves and operators (docs/sdf.md, "Scenes")
+                        (exactly one of the three)
+  --shape auto|sheet|solid
+                        solid: F <= 0 clipped to the box, negative inside; sheet:
+                        the surface itself, >= 0, 0 on it; auto (default): solid
+                        only where the surface encloses a region inside its box
+                        (--json says which was picked). A scene's leaves carry
+                        their own "shape"
+  --domain s0,s1[,t0,t1]
+                        the parameter domain of --x --y [--z], exact numbers with
+                        lo < hi (default: docs/sdf.md, "Patches")
   --mode fast|safe      fast: F/|grad F|, first order, not a bound (default); safe: a
                         proven lower bound of the distance (sphere tracing never
                         crosses the surface; slower, 0 within fp32's resolution)
   --box x0,y0,z0,x1,y1,z1
-                        the scene box, exact numbers (default -2,-2,-2,2,2,2)
+                        the box, exact numbers (default -2,-2,-2,2,2,2; a curve's
+                        is x0,y0,x1,y1; a patch's default is fitted to it)
   --name NAME           function NAME_sdf (default surface): [A-Za-z_][A-Za-z0-9_]*,
                         at most 64 characters, not gl nor a gl_ prefix (gl_sdf is
                         reserved), no __, no trailing _, not a GLSL keyword
-  --json                print the JSON object POST /v1/sdf returns
+  --eval FILE           instead of the GLSL, print the value at each point of FILE
+                        (- : standard input), one per line (%.9g): lines "x y z"
+                        ("x y" for a curve), blank lines and # comments skipped;
+                        computed in C++ float, as the GLSL computes it
+  --json                print the JSON object POST /v1/sdf returns (with --eval,
+                        on the first line, the values after it)
   -h, --help            this text
 
-exit status: 0 success, 2 usage error (also: a scene file that cannot be read),
-3 invalid input (parse error, unknown variable, constant polynomial, invalid_box,
-invalid_name, degree_too_high: mode safe and terms beyond fp32's range; for scenes
-invalid_json, invalid_scene, unknown_node_type, missing_parameter, invalid_value,
-name_collision, unsafe_operator, repetition_overlap, unbounded_child,
-scene_too_large, invalid_domain, unbounded_patch, no_single_equation: a parametric
-leaf whose image is not a surface), 5 time or size limit.
+exit status: 0 success, 2 usage error (also: a scene or point file that cannot be
+read), 3 invalid input (parse error, unknown variable, constant polynomial,
+invalid_box, invalid_domain, invalid_name, invalid_point: a malformed line of
+--eval's file, named by its number; degree_too_high: mode safe and terms beyond
+fp32's range; for scenes invalid_json, invalid_scene, unknown_node_type,
+missing_parameter, invalid_value, name_collision, unsafe_operator,
+repetition_overlap, unbounded_child, scene_too_large, unbounded_patch,
+no_single_equation: a parametric leaf whose image is not a surface), 4 no single
+equation (a parametrization whose image is not a surface or curve), 5 time or size
+limit.
 )";
 
 const char* const kRenderHelp =
-    R"(usage: implicitizer render (--implicit E | --x E --y E --z E | --scene FILE.json) -o FILE.png [OPTIONS]
+    R"(usage: implicitizer render (--implicit E | --x E --y E [--z E] | --scene FILE.json) -o FILE.png [OPTIONS]
 
-Draws a preview of the surface E = 0, of a parametric surface (implicitized first)
-or of a scene into a PNG: rays marched through the same distance function the GLSL
-of `implicitizer sdf` computes (evaluated in fp32 on the CPU), shaded with
-Blinn-Phong, soft shadows and ambient occlusion (docs/render.md).
+Draws a preview of the surface E = 0, of a parametric patch, of a plane curve (in
+the plane) or of a scene into a PNG: rays marched through the same distance
+function the GLSL of `implicitizer sdf` computes (evaluated in fp32 on the CPU),
+shaded with Blinn-Phong, soft shadows and ambient occlusion (docs/render.md).
 
 options:
-  --implicit E          the polynomial F(x, y, z)
-  --x E --y E --z E     a parametric surface instead (--params s,t: their order)
+  --implicit E          the polynomial F(x, y, z) (without z: a plane curve)
+  --x E --y E [--z E]   a parametric surface or (no --z) curve instead (--params s,t:
+                        their order)
   --scene FILE.json     a scene instead (docs/sdf.md, "Scenes")
+  --shape auto|sheet|solid, --domain s0,s1[,t0,t1]
+                        as for sdf
   -o, --output FILE     the PNG to write (required)
   --method M            sphere (default): sphere tracing; enhanced: over-relaxed
                         sphere tracing, as safe as sphere; newton, forward_newton:
@@ -206,8 +234,8 @@ limits: width and height 1 to 4096, width x height x aa^2 at most 4194304 rays.
 exit status: 0 success, 2 usage error (also: a scene file that cannot be read, an
 output file that cannot be written), 3 invalid input (the errors of sdf, and
 invalid_size, render_too_large, invalid_camera, method_not_applicable: exact on a
-scene that is not one polynomial leaf), 4 no single equation (a parametric surface
-whose image is not a surface), 5 time limit.
+scene that is not one polynomial leaf), 4 no single equation (a parametrization
+whose image is not a surface or curve), 5 time limit.
 )";
 
 }  // namespace implicitizer::cli

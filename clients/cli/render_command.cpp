@@ -17,17 +17,12 @@
 #include "implicitizer/codec/render_json.hpp"
 #include "implicitizer/codec/scene_json.hpp"
 #include "implicitizer/service/render_request.hpp"
+#include "scene_flags.hpp"
 
 namespace implicitizer::cli {
 namespace {
 
 constexpr const char* kCommand = "render";
-
-constexpr OptionSpec kOptions[] = {{"implicit", true}, {"x", true},         {"y", true},       {"z", true},
-                                   {"params", true},   {"scene", true},     {"method", true},  {"mode", true},
-                                   {"size", true},     {"aa", true},        {"eye", true},     {"target", true},
-                                   {"box", true},      {"precision", true}, {"threads", true}, {"timeout", true},
-                                   {"output", true},   {"json", false},     {"help", false}};
 
 // "256x192" → (256, 192).
 std::pair<std::size_t, std::size_t> parse_size(const std::string& text) {
@@ -62,33 +57,10 @@ struct RenderCommand {
   std::size_t threads = 0;
 };
 
-// --implicit, --x --y --z [--params], or --scene: exactly one surface.
-void read_surface_flags(const Arguments& arguments, RenderCommand& command) {
-  const auto implicit = arguments.value("implicit");
-  const auto scene = arguments.value("scene");
-  const bool parametric = arguments.has("x") || arguments.has("y") || arguments.has("z");
-  if ((implicit ? 1 : 0) + (scene ? 1 : 0) + (parametric ? 1 : 0) != 1) {
-    throw UsageError("give exactly one of --implicit E, --x E --y E --z E, or --scene FILE.json");
-  }
-  if (implicit) command.request.implicit = *implicit;
-  if (scene) command.scene_text = read_text_file(*scene);
-  if (parametric) {
-    if (!arguments.has("x") || !arguments.has("y") || !arguments.has("z")) {
-      throw UsageError("a parametric surface needs --x, --y and --z");
-    }
-    command.request.parametric =
-        std::array<std::string, 3>{*arguments.value("x"), *arguments.value("y"), *arguments.value("z")};
-    if (const auto params = arguments.value("params")) command.request.parameters = split_list(*params, "params");
-  } else if (arguments.has("params")) {
-    throw UsageError("--params goes with --x --y --z");
-  }
-}
-
 // Everything but the surface: how to draw it and where to write it.
 void read_drawing_flags(const Arguments& arguments, bool json, RenderCommand& command) {
   RenderRequest& request = command.request;
   command.method_text = arguments.value("method");
-  if (const auto mode = read_choice(arguments, "mode", parse_sdf_mode, json)) request.mode = *mode;
   if (const auto size = arguments.value("size")) std::tie(request.width, request.height) = parse_size(*size);
   if (const auto aa = arguments.value("aa")) {
     const std::size_t n = parse_count(*aa, "aa");
@@ -97,7 +69,6 @@ void read_drawing_flags(const Arguments& arguments, bool json, RenderCommand& co
   }
   if (const auto eye = arguments.value("eye")) request.eye = parse_point(*eye, "eye");
   if (const auto target = arguments.value("target")) request.target = parse_point(*target, "target");
-  if (const auto box = arguments.value("box")) request.box = split_list(*box, "box");
   if (const auto precision = read_choice(arguments, "precision", parse_evaluation_precision, json)) {
     request.precision = *precision;
   }
@@ -106,19 +77,6 @@ void read_drawing_flags(const Arguments& arguments, bool json, RenderCommand& co
   const auto out = arguments.value("output");
   if (!out) throw UsageError("missing -o FILE.png (where to write the image)");
   command.output = *out;
-}
-
-// The texts behind the request's fields, for the caret under an error.
-void note_field_texts(const RenderCommand& command, ErrorReport& report) {
-  if (command.scene_text) {
-    report.field_texts["scene"] = *command.scene_text;
-  } else if (command.request.parametric) {
-    report.field_texts["x"] = (*command.request.parametric)[0];
-    report.field_texts["y"] = (*command.request.parametric)[1];
-    report.field_texts["z"] = (*command.request.parametric)[2];
-  } else {
-    report.field_texts["implicit"] = command.request.implicit;
-  }
 }
 
 // Renders, writes the PNG and reports; returns kExitUsage when the file cannot be written.
@@ -155,19 +113,29 @@ int run_render_command(std::span<const std::string> args) {
     for (std::string& w : words) {
       if (w == "-o") w = "--output";
     }
-    const Arguments arguments = parse_arguments(words, kOptions);
+    const Arguments arguments = parse_arguments(words, with_scene_options({{"method", true},
+                                                                           {"size", true},
+                                                                           {"aa", true},
+                                                                           {"eye", true},
+                                                                           {"target", true},
+                                                                           {"precision", true},
+                                                                           {"threads", true},
+                                                                           {"timeout", true},
+                                                                           {"output", true},
+                                                                           {"json", false},
+                                                                           {"help", false}}));
     if (arguments.has("help")) {
       std::cout << kRenderHelp;
       return kExitOk;
     }
     report.json = arguments.has("json");
     if (!arguments.positionals().empty()) throw UsageError("unexpected argument '" + arguments.positionals()[0] + "'");
-    read_surface_flags(arguments, command);
+    command.scene_text = read_scene_flags(arguments, report.json, command.request);
     read_drawing_flags(arguments, report.json, command);
   } catch (const UsageError& e) {
     return report_usage_error(e.what(), kCommand);
   }
-  note_field_texts(command, report);
+  note_scene_field_texts(command.request, command.scene_text, report);
 
   int status = kExitOk;
   const int answered = run_reporting_errors(report, [&] { status = render_and_write(command, report.json); });

@@ -1,67 +1,79 @@
 #include "sdf_command.hpp"
 
-#include <fstream>
+#include <cstdio>
 #include <iostream>
 #include <optional>
-#include <sstream>
 
 #include "arguments.hpp"
-#include "choice_flag.hpp"
 #include "error_report.hpp"
 #include "help.hpp"
 #include "implicitizer/codec/scene_json.hpp"
 #include "implicitizer/codec/sdf_json.hpp"
 #include "implicitizer/service/sdf_request.hpp"
+#include "point_list.hpp"
+#include "scene_flags.hpp"
 
 namespace implicitizer::cli {
 namespace {
 
 constexpr const char* kCommand = "sdf";
 
-constexpr OptionSpec kOptions[] = {{"implicit", true}, {"scene", true}, {"mode", true}, {"box", true},
-                                   {"name", true},     {"json", false}, {"help", false}};
+// What the flags say, before the scene file and the points are parsed (their errors
+// are invalid input, status 3, as a request body's are over HTTP).
+struct SdfCommand {
+  SdfRequest request;
+  std::optional<std::string> scene_text;  // the --scene file's contents
+  std::optional<std::string> eval_text;   // the --eval file's contents
+};
+
+// One value per line: the scene's value at each point, by CompiledScene::evaluate<float>
+// (the GLSL's operations in its order, on the point rounded to float as a shader
+// receives it). %.9g prints a float exactly enough to read it back.
+void print_values(const CompiledScene& scene, const std::vector<std::array<double, 3>>& points) {
+  for (const std::array<double, 3>& p : points) {
+    const float value = scene.evaluate<float>(
+        Vec3<float>{static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
+    std::printf("%.9g\n", static_cast<double>(value));
+  }
+}
 
 }  // namespace
 
 int run_sdf_command(std::span<const std::string> args) {
-  SdfRequest request;
-  std::optional<std::string> scene_text;  // the --scene file's contents
+  SdfCommand command;
   ErrorReport report;
   try {
-    const Arguments arguments = parse_arguments(args, kOptions);
+    const Arguments arguments =
+        parse_arguments(args, with_scene_options({{"eval", true}, {"json", false}, {"help", false}}));
     if (arguments.has("help")) {
       std::cout << kSdfHelp;
       return kExitOk;
     }
     report.json = arguments.has("json");
-    if (const auto mode = read_choice(arguments, "mode", parse_sdf_mode, report.json)) request.mode = *mode;
     if (!arguments.positionals().empty()) throw UsageError("unexpected argument '" + arguments.positionals()[0] + "'");
-    const auto implicit = arguments.value("implicit");
-    const auto scene = arguments.value("scene");
-    if (implicit && scene) throw UsageError("give --implicit E or --scene FILE.json, not both");
-    if (!implicit && !scene) throw UsageError("missing --implicit E (the surface E = 0) or --scene FILE.json");
-    if (implicit) request.implicit = *implicit;
-    if (scene) scene_text = read_text_file(*scene);
-    if (const auto box = arguments.value("box")) request.box = split_list(*box, "box");
-    if (const auto name = arguments.value("name")) request.name = *name;
+    command.scene_text = read_scene_flags(arguments, report.json, command.request);
+    if (const auto eval = arguments.value("eval")) command.eval_text = read_point_file(*eval);
   } catch (const UsageError& e) {
     return report_usage_error(e.what(), kCommand);
   }
-  if (scene_text) {
-    report.field_texts["scene"] = *scene_text;
-  } else {
-    report.field_texts["implicit"] = request.implicit;
-  }
+  note_scene_field_texts(command.request, command.scene_text, report);
 
   return run_reporting_errors(report, [&] {
+    SdfRequest& request = command.request;
     // The file's JSON errors are input errors (exit 3) with their byte offset.
-    if (scene_text) request.scene = parse_scene_json(*scene_text, "scene");
-    const SdfAnswer answer = answer_sdf_request(request);
+    if (command.scene_text) request.scene = parse_scene_json(*command.scene_text, "scene");
+    const CompiledSdfRequest compiled = compile_sdf_request(request);
+    const SdfAnswer answer = describe_sdf_request(compiled);
+    // Parsed before anything is printed, so a malformed line leaves stdout empty.
+    std::vector<std::array<double, 3>> points;
+    if (command.eval_text) points = parse_point_list(*command.eval_text, answer.dimension);
     if (report.json) {
       std::cout << encode_sdf_response(answer) << '\n';
-    } else {
+    } else if (!command.eval_text) {
       std::cout << answer.glsl;
     }
+    std::cout.flush();
+    print_values(compiled.scene, points);
   });
 }
 

@@ -227,26 +227,34 @@ class Client:
         return self._post_json("/v1/resultant", _without_none(
             polynomials=[f, g], variable=variable, timeout_ms=timeout_ms))
 
-    def sdf(self, implicit=None, scene=None, mode=None, box=None, name=None, timeout_ms=None):
+    def sdf(self, implicit=None, scene=None, x=None, y=None, z=None, parameters=None, shape=None, domain=None,
+            mode=None, box=None, name=None, timeout_ms=None):
         """POST /v1/sdf: the GLSL distance function of `implicit` (a polynomial in x,
-        y, z) or of `scene` (a dict: the scene tree of docs/sdf.md); give one.
+        y, z; without z a plane curve), of the parametric `x`, `y`, `z` (with
+        `parameters`; without `z` a plane curve) or of `scene` (a dict: the scene tree
+        of docs/sdf.md); give one.
 
+        `shape` is "auto" (default), "sheet" or "solid"; `domain` the parameter domain
+        [s0, s1, t0, t1] ([s0, s1] for a curve; numbers or exact strings like "1/3");
         `mode` is "fast" (default) or "safe" (a proven lower bound); `box` six numbers
-        x0, y0, z0, x1, y1, z1 (default [-2, 2]³); `name` the prefix of the function
-        (default "surface"). Returns `glsl` (defining `float NAME_sdf(vec3 p)`),
-        `function`, `mode`, `box`, `degree`, `uniforms` (for a scene also `nodes`
-        and `leaves`).
+        x0, y0, z0, x1, y1, z1 (four for a curve; default [-2, 2]³, fitted to a patch);
+        `name` the prefix of the function (default "surface"). Returns `glsl`
+        (defining `float NAME_sdf(vec3 p)`, `vec2 p` for a curve), `function`, `mode`,
+        `shape` (the one picked), `dimension`, `box` (the box used), `degree`,
+        `uniforms` (for a scene also `nodes` and `leaves`).
         """
         return self._post_json("/v1/sdf", _without_none(
-            implicit=implicit, scene=scene, mode=mode, box=box, name=name, timeout_ms=timeout_ms))
+            implicit=implicit, scene=scene, x=x, y=y, z=z, parameters=parameters, shape=shape, domain=domain,
+            mode=mode, box=box, name=name, timeout_ms=timeout_ms))
 
-    def render(self, implicit=None, scene=None, x=None, y=None, z=None, parameters=None, mode=None, box=None,
-               name=None, width=None, height=None, method=None, aa=None, eye=None, target=None, precision=None,
+    def render(self, implicit=None, scene=None, x=None, y=None, z=None, parameters=None, shape=None, domain=None,
+               mode=None, box=None, name=None, width=None, height=None, method=None, aa=None, eye=None, target=None, precision=None,
                format=None, timeout_ms=None):  # pylint: disable=redefined-builtin
         """POST /v1/render: a PNG preview. Returns RenderResult(png, stats).
 
-        The surface is `implicit`, `scene` (as for `sdf`, with `mode`, `box`, `name`)
-        or the parametric `x`, `y`, `z` (with `parameters`); give one. `width`,
+        The object is given as for `sdf` (`implicit`, `scene`, or the parametric `x`,
+        `y`, `z` with `parameters`; give one), with `shape`, `domain`, `mode`, `box`,
+        `name`; a plane curve is drawn in the plane. `width`,
         `height` in pixels (1 to 4096, default 256), `method` "sphere" (default),
         "enhanced", "newton", "forward_newton" or "exact", `aa` AA×AA samples per
         pixel (1 to 8, default 2), `eye` and `target` three numbers each,
@@ -257,8 +265,8 @@ class Client:
         More than 4194304 rays (width·height·aa²) raises `render_too_large` (413).
         """
         request = _without_none(
-            implicit=implicit, scene=scene, x=x, y=y, z=z, parameters=parameters, mode=mode, box=box, name=name,
-            width=width, height=height, method=method, aa=aa, eye=eye, target=target, precision=precision,
+            implicit=implicit, scene=scene, x=x, y=y, z=z, parameters=parameters, shape=shape, domain=domain,
+            mode=mode, box=box, name=name, width=width, height=height, method=method, aa=aa, eye=eye, target=target, precision=precision,
             format=format, timeout_ms=timeout_ms)
         status, headers, body = self._exchange("POST", "/v1/render", request)
         if format == "json":
@@ -401,24 +409,16 @@ def _build_parsers():
     p.add_argument("polynomials", nargs="*", metavar="F G")
 
     p = parsers["sdf"] = command("sdf", "Print the GLSL distance function float NAME_sdf(vec3 p).")
-    _option(p, "implicit", "E", help="the polynomial F(x,y,z)")
-    _option(p, "scene", "FILE.json", help="a scene (docs/sdf.md, \"Scenes\")")
-    _option(p, "mode", "M", ("fast", "safe"), help="default fast")
-    _option(p, "box", "x0,y0,z0,x1,y1,z1", help="the scene box, default -2,-2,-2,2,2,2")
+    _object_options(p)
+    _option(p, "box", "x0,y0,z0,x1,y1,z1", help="the box, default -2,-2,-2,2,2,2 (a curve: x0,y0,x1,y1)")
     _option(p, "name", "NAME", help="the function's prefix, default surface")
     _option(p, "timeout", "SECONDS", help="the computation budget")
     _flag(p, "json", "print the /v1/sdf response")
 
     p = parsers["render"] = command("render", "Write a PNG preview (sphere tracing by default).")
-    _option(p, "implicit", "E", help="the polynomial F(x,y,z)")
-    _option(p, "x", "E", help="a parametric surface: x(params), with --y and --z")
-    _option(p, "y", "E")
-    _option(p, "z", "E")
-    _option(p, "params", "s,t", help="the parametric surface's parameters")
-    _option(p, "scene", "FILE.json", help="a scene (docs/sdf.md, \"Scenes\")")
+    _object_options(p)
     _option(p, "output", "FILE.png", help="where to write the PNG, required (also -o)")
     _option(p, "method", "M", ("sphere", "enhanced", "newton", "forward_newton", "exact"), help="default sphere")
-    _option(p, "mode", "M", ("fast", "safe"), help="default fast")
     _option(p, "size", "WxH", help="pixels, default 256x256")
     _option(p, "aa", "N", help="NxN samples per pixel, 1 to 8, default 2")
     _option(p, "eye", "x,y,z", help="the camera")
@@ -438,8 +438,10 @@ _COMMAND_HELP = """commands:
   implicitize --x E --y E [--z E] [--params s,t] [--method M] [--timeout S] [--json]
   groebner [--vars x,y] [--order lex|grlex|grevlex] [--weights 1,2] [--eliminate s] [--json] F...
   resultant --var t [--json] F G
-  sdf (--implicit E | --scene FILE.json) [--mode fast|safe] [--box ...] [--name NAME] [--json]
-  render (--implicit E | --x E --y E --z E | --scene FILE.json) -o FILE.png [--method M] [--size WxH]
+  sdf (--implicit E | --x E --y E [--z E] | --scene FILE.json) [--shape auto|sheet|solid]
+      [--domain s0,s1[,t0,t1]] [--mode fast|safe] [--box ...] [--name NAME] [--json]
+  render (--implicit E | --x E --y E [--z E] | --scene FILE.json) -o FILE.png [--shape S] [--domain D]
+         [--method M] [--size WxH]
          [--aa N] [--eye x,y,z] [--target x,y,z] [--precision float|double] [--json]
   health, metrics, help [COMMAND]
 
@@ -447,6 +449,19 @@ The server is --url URL, else $IMPLICITIZER_URL, else %s.
 Exit status: 0 ok, 1 internal error or no answer, 2 usage, 3 invalid input,
 4 no single implicit equation, 5 time or size limit (clients/python/README.md).
 """ % DEFAULT_URL
+
+
+def _object_options(p):
+    """The options of the object `sdf` and `render` share, with its shape, domain and mode."""
+    _option(p, "implicit", "E", help="the polynomial F(x,y,z) (without z: a plane curve)")
+    _option(p, "x", "E", help="a parametric surface: x(params), with --y and --z (no --z: a plane curve)")
+    _option(p, "y", "E")
+    _option(p, "z", "E")
+    _option(p, "params", "s,t", help="the parametrization's parameters, in order")
+    _option(p, "scene", "FILE.json", help="a scene (docs/sdf.md, \"Scenes\")")
+    _option(p, "shape", "S", ("auto", "sheet", "solid"), help="default auto")
+    _option(p, "domain", "s0,s1[,t0,t1]", help="the parameter domain (exact numbers)")
+    _option(p, "mode", "M", ("fast", "safe"), help="default fast")
 
 
 def _top_parser():
@@ -643,33 +658,32 @@ def _run_resultant(client, args, field_texts):
         print(answer["resultant"])
 
 
-def _surface_of(args, field_texts, parametric_allowed):
-    """The request fields naming the surface: implicit, scene, or x, y, z (render only)."""
-    parametric = parametric_allowed and any(getattr(args, c) is not None for c in "xyz")
+def _object_of(args, field_texts):
+    """The request fields naming the object (implicit, scene, or x, y[, z]) and its
+    shape and domain, as the C++ CLI reads them (clients/cli/scene_flags.cpp)."""
+    parametric = any(getattr(args, c) is not None for c in "xyz")
     given = (args.implicit is not None) + (args.scene is not None) + parametric
-    if given != 1 and parametric_allowed:
-        raise _UsageError("give exactly one of --implicit E, --x E --y E --z E, or --scene FILE.json")
     if given != 1:
-        raise _UsageError("give --implicit E or --scene FILE.json, not both" if given else
-                          "missing --implicit E (the surface E = 0) or --scene FILE.json")
-    if parametric_allowed and args.params is not None and not parametric:
-        raise _UsageError("--params goes with --x --y --z")
+        raise _UsageError("give exactly one of --implicit E, --x E --y E [--z E], or --scene FILE.json")
+    if args.params is not None and not parametric:
+        raise _UsageError("--params goes with --x --y [--z]")
+    fields = {"shape": args.shape, "domain": _list_option(args, "domain")}
     if args.scene is not None:
         text, scene = _read_scene(args.scene)
         field_texts["scene"] = text
-        return {"scene": scene}
+        return dict(fields, scene=scene)
     if args.implicit is not None:
         field_texts["implicit"] = args.implicit
-        return {"implicit": args.implicit}
-    if any(getattr(args, c) is None for c in "xyz"):
-        raise _UsageError("a parametric surface needs --x, --y and --z")
-    field_texts.update(x=args.x, y=args.y, z=args.z)
-    return {"x": args.x, "y": args.y, "z": args.z, "parameters": _list_option(args, "params")}
+        return dict(fields, implicit=args.implicit)
+    if args.x is None or args.y is None:
+        raise _UsageError("a parametric surface needs --x, --y and --z, a plane curve --x and --y")
+    field_texts.update(x=args.x, y=args.y, z=args.z or "")
+    return dict(fields, x=args.x, y=args.y, z=args.z, parameters=_list_option(args, "params"))
 
 
 def _run_sdf(client, args, field_texts):
     """`sdf`: the GLSL source."""
-    surface = _surface_of(args, field_texts, parametric_allowed=False)
+    surface = _object_of(args, field_texts)
     answer = client.sdf(mode=args.mode, box=_numbers_option(args, "box"), name=args.name,
                         timeout_ms=_timeout_ms(args), **surface)
     if args.json:
@@ -680,7 +694,7 @@ def _run_sdf(client, args, field_texts):
 
 def _run_render(client, args, field_texts):
     """`render`: writes the PNG; the statistics as JSON (--json) or a summary on stderr."""
-    surface = _surface_of(args, field_texts, parametric_allowed=True)
+    surface = _object_of(args, field_texts)
     if args.output is None:
         raise _UsageError("missing -o FILE.png (where to write the image)")
     width = height = aa = None

@@ -284,7 +284,7 @@ if [[ $(status) == 0 ]] && grep -q "^float ball_sdf(vec3 p) {" "$WORK/out" && ! 
 fi
 expect_json "sdf json" 0 'j["function"] == "surface_sdf" and j["mode"] == "fast" and j["degree"] == 2 and j["box"] == [-2, -2, -2, 2, 2, 2] and "float surface_sdf(vec3 p)" in j["glsl"]' \
   sdf --implicit "x^2+y^2+z^2-1" --json
-expect_json "sdf json box" 0 'j["box"] == [0, 0, 0, 1e-6, 1e-6, 1e-6]' sdf --implicit "x-1e-7" --box 0,0,0,1e-6,1e-6,1e-6 --json
+expect_json "sdf json box" 0 'j["box"] == [0, 0, 0, 1e-6, 1e-6, 1e-6]' sdf --implicit "x+z-1e-7" --box 0,0,0,1e-6,1e-6,1e-6 --json
 run sdf --implicit "x^2+y^2+z^2-1" --mode safe --name ball
 if [[ $(status) == 0 ]] && grep -q "^float ball_sdf(vec3 p) {" "$WORK/out" && grep -q "safe distance bound" "$WORK/out" \
   && ! grep -q pow "$WORK/out"; then pass; else
@@ -307,7 +307,7 @@ fi
 expect_json "sdf scene json" 0 'j["nodes"] == 4 and j["uniforms"] == [{"name": "ball_radius", "type": "float", "default": 1.0}] and j["leaves"] == []' \
   sdf --scene "$WORK/scene.json" --json
 echo '{"type": "union", "children": [{"type": "sphere", "radius": 1}, {"type": "parametric", "x": "s", "y": "t", "z": "s*t", "domain": [[0, 1], [0, 1]]}]}' >"$WORK/patch.json"
-expect_json "sdf scene parametric leaf" 0 'j["mode"] == "safe" and j["leaves"] == [{"implicit": "x*y-z", "degree": 2, "trimmed": True}]' \
+expect_json "sdf scene parametric leaf" 0 'j["mode"] == "safe" and j["leaves"] == [{"implicit": "x*y-z", "degree": 2, "trimmed": True, "shape": "sheet"}] and "shape" not in j' \
   sdf --scene "$WORK/patch.json" --mode safe --json
 echo '{"type": "sphere", "raduis": 1}' >"$WORK/typo.json"
 expect_json "sdf scene unknown key" 3 'j["error"]["code"] == "invalid_scene" and j["error"]["field"] == "scene.raduis"' \
@@ -317,9 +317,9 @@ expect_status "sdf scene broken json" 3 "invalid_json" sdf --scene "$WORK/broken
 echo '{"type": "smooth_union", "k": 0.1, "children": [{"type": "sphere", "radius": 1}, {"type": "implicit", "equation": "x^2+y^2-z"}]}' >"$WORK/unsafe.json"
 expect_status "sdf scene unsafe smooth" 3 "unsafe_operator" sdf --scene "$WORK/unsafe.json" --mode safe
 expect_status "sdf scene missing file" 2 "cannot read scene file" sdf --scene "$WORK/absent.json"
-expect_status "sdf implicit and scene" 2 "not both" sdf --implicit x --scene "$WORK/scene.json"
+expect_status "sdf implicit and scene" 2 "exactly one of" sdf --implicit x --scene "$WORK/scene.json"
 expect_status "sdf unknown mode" 2 "unknown --mode" sdf --implicit "x" --mode exact
-expect_status "sdf missing input" 2 "missing --implicit" sdf
+expect_status "sdf missing input" 2 "exactly one of --implicit E" sdf
 expect_status "sdf injected name" 3 "invalid_name" sdf --implicit "x" --name "a(){}; void b"
 expect_status "sdf gl_ name" 3 "invalid_name" sdf --implicit "x" --name gl_X
 # Issue 16: "gl" is an identifier, but the function would be gl_sdf (reserved).
@@ -331,6 +331,121 @@ expect_status "sdf unknown variable" 3 "unknown_variable" sdf --implicit "x+t"
 expect_status "sdf constant" 3 "constant_polynomial" sdf --implicit "3"
 expect_json "sdf json error" 3 'j["error"]["code"] == "invalid_name" and j["error"]["field"] == "name"' \
   sdf --implicit "x" --name "1a" --json
+
+# Issue 18: every input is a scene of one leaf; parametric patches, shapes, domains,
+# and --eval, the C++ float evaluator the GLSL mirrors.
+expect_json "sdf answer says shape and dimension" 0 'j["shape"] == "solid" and j["dimension"] == 3 and "nodes" not in j and "leaves" not in j' \
+  sdf --implicit "x^2+y^2+z^2-1" --json
+# A patch without --box: the box is fitted to X([0,1]^2) = [0,1]^3, padded by 1e-3.
+expect_json "sdf patch fitted box" 0 'j["shape"] == "sheet" and j["degree"] == 2 and all(abs(a - b) < 1e-12 for a, b in zip(j["box"], [-0.001, -0.001, -0.001, 1.001, 1.001, 1.001]))' \
+  sdf --x s --y t --z "s*t" --domain 0,1,0,1 --json
+expect_json "sdf patch given box" 0 'j["box"] == [-1, -1, -1, 2, 2, 2]' \
+  sdf --x s --y t --z "s*t" --params s,t --domain 0,1,0,1 --box -1,-1,-1,2,2,2 --json
+expect_status "sdf domain lo >= hi" 3 "invalid_domain in domain\[2\]" sdf --x s --y t --z "s*t" --domain 0,1,1,1
+expect_status "sdf domain count" 3 "invalid_domain in domain:" sdf --x s --y t --z "s*t" --domain 0,1,0
+expect_status "sdf domain not a number" 3 "invalid_domain in domain\[1\]" sdf --x s --y t --z "s*t" --domain 0,inf,0,1
+expect_json "sdf domain json error" 3 'j["error"]["code"] == "invalid_domain" and j["error"]["field"] == "domain"' \
+  sdf --implicit "x^2+y^2+z^2-1" --domain 0,1 --json
+expect_status "sdf unknown shape" 2 "unknown --shape" sdf --implicit "x^2+y^2+z^2-1" --shape hollow
+expect_status "sdf shape with a scene" 3 "invalid_value in shape" sdf --scene "$WORK/scene.json" --shape sheet
+expect_status "sdf z without x" 2 "needs --x, --y and --z" sdf --y t --z s
+expect_status "sdf params without x" 2 "--params goes with" sdf --implicit "x+z" --params s
+expect_status "sdf space curve" 4 "no_single_equation" sdf --x t --y "t^2" --z "t^3"
+run sdf --x t --y "t^2" --z "t^3" --json
+if [[ $(status) == 4 ]] && python3 -c '
+import json, sys
+j = json.load(sys.stdin)["error"]
+sys.exit(0 if j["code"] == "no_single_equation" and len(j["generators"]) == 3 else 1)' <"$WORK/out"; then pass; else
+  fail "sdf space curve: the error JSON lists the three generators of the twisted cubic"
+fi
+
+# --eval: one value per line, %.9g. The unit sphere in fast mode is F/|grad F| =
+# (|p|^2 - 1)/(2|p|): 3/4 at (2,0,0), 0 on the sphere; negative inside.
+cat >"$WORK/points.txt" <<'POINTS'
+# x y z
+2 0 0
+
+1 0 0   # on the sphere
+0 0.5 0
+POINTS
+run sdf --implicit "x^2+y^2+z^2-1" --eval "$WORK/points.txt"
+if [[ $(status) == 0 ]] && python3 -c '
+import sys
+v = [float(line) for line in open(sys.argv[1])]
+sys.exit(0 if len(v) == 3 and abs(v[0] - 0.75) < 1e-6 and abs(v[1]) < 1e-6 and abs(v[2] + 0.75) < 1e-6 else 1)' "$WORK/out"; then pass; else
+  fail "sdf --eval: the sphere's fast values 0.75, 0, -0.75"
+fi
+# Safe mode: a proven lower bound of the distance (1 at (2,0,0)), positive outside.
+printf '2 0 0\n0 0 3\n' >"$WORK/far.txt"
+run sdf --implicit "x^2+y^2+z^2-1" --mode safe --eval "$WORK/far.txt"
+if [[ $(status) == 0 ]] && python3 -c '
+import sys
+v = [float(line) for line in open(sys.argv[1])]
+sys.exit(0 if len(v) == 2 and 0 < v[0] <= 1 and 0 < v[1] <= 2 else 1)' "$WORK/out"; then pass; else
+  fail "sdf --eval --mode safe: 0 < value <= the distance"
+fi
+# The plane z = 0 as a solid (--shape solid keeps today's behaviour): F/|grad F| = z.
+printf '0.5 0.5 0.25\n-1 1 -0.5\n' | "$BIN" sdf --implicit z --shape solid --eval - >"$WORK/out" 2>"$WORK/err"
+echo $? >"$WORK/rc"
+if [[ $(status) == 0 && $(cat "$WORK/out") == $'0.25\n-0.5' ]]; then pass; else
+  fail "sdf --eval - (stdin): the solid plane's values are z"
+fi
+# The patch s, t, s*t on [0,1]^2: 0 on the patch, positive beside it.
+printf '0.5 0.5 0.25\n0.5 0.5 0.75\n' >"$WORK/patch_points.txt"
+run sdf --x s --y t --z "s*t" --domain 0,1,0,1 --eval "$WORK/patch_points.txt"
+if [[ $(status) == 0 ]] && python3 -c '
+import sys
+v = [float(line) for line in open(sys.argv[1])]
+sys.exit(0 if len(v) == 2 and abs(v[0]) < 1e-6 and v[1] > 0.1 else 1)' "$WORK/out"; then pass; else
+  fail "sdf --eval on a patch: 0 on it, positive off it"
+fi
+# --json with --eval: the answer object first (the box used), then the values.
+run sdf --x s --y t --z "s*t" --domain 0,1,0,1 --eval "$WORK/patch_points.txt" --json
+if [[ $(status) == 0 ]] && python3 -c '
+import json, sys
+lines = open(sys.argv[1]).read().splitlines()
+j = json.loads(lines[0])
+sys.exit(0 if abs(j["box"][3] - 1.001) < 1e-12 and len(lines) == 3 and abs(float(lines[1])) < 1e-6 else 1)' "$WORK/out"; then pass; else
+  fail "sdf --eval --json: the answer object, then one value per point"
+fi
+run sdf --scene "$WORK/scene.json" --eval "$WORK/far.txt"
+if [[ $(status) == 0 && $(wc -l <"$WORK/out") == 2 ]]; then pass; else fail "sdf --scene --eval: one value per point"; fi
+printf '1 2 3\n\n1 2\n' >"$WORK/short.txt"
+expect_status "sdf --eval short line" 3 "invalid_point in eval: line 3" sdf --implicit "x+z" --eval "$WORK/short.txt"
+printf '1 2 three\n' >"$WORK/word.txt"
+expect_json "sdf --eval json error" 3 'j["error"]["code"] == "invalid_point" and j["error"]["field"] == "eval" and "line 1" in j["error"]["message"]' \
+  sdf --implicit "x+z" --eval "$WORK/word.txt" --json
+expect_status "sdf --eval missing file" 2 "cannot read point file" sdf --implicit "x+z" --eval "$WORK/absent.txt"
+# Shapes picked by auto, and plane curves (issue 18; the semantics are lib/scene's).
+expect_json "sdf auto saddle is a sheet" 0 'j["shape"] == "sheet" and j["dimension"] == 3' sdf --implicit "z-x*y" --json
+# The plane z = 0 as a sheet: |z| (F/|grad F| = z), >= 0 on both sides.
+printf '0.5 0.5 0.25\n-1 1 -0.5\n' | "$BIN" sdf --implicit z --eval - >"$WORK/out" 2>"$WORK/err"
+echo $? >"$WORK/rc"
+if [[ $(status) == 0 && $(cat "$WORK/out") == $'0.25\n0.5' ]]; then pass; else
+  fail "sdf --eval: the plane under auto is a sheet, |z|"
+fi
+expect_json "sdf curve" 0 'j["dimension"] == 2 and j["shape"] == "solid" and j["box"] == [-2, -2, 2, 2] and "float surface_sdf(vec2 p)" in j["glsl"]' \
+  sdf --implicit "x^2+y^2-1" --json
+# The unit circle: (r^2 - 1)/(2r) in the plane, at points "x y".
+printf '2 0\n0.5 0\n' >"$WORK/plane_points.txt"
+run sdf --implicit "x^2+y^2-1" --box -2,-2,2,2 --eval "$WORK/plane_points.txt"
+if [[ $(status) == 0 && $(cat "$WORK/out") == $'0.75\n-0.75' ]]; then pass; else
+  fail "sdf --eval on a curve: the circle's values 0.75 and -0.75"
+fi
+expect_status "sdf --eval curve with z" 3 "invalid_point in eval: line 1: a point is x y" \
+  sdf --implicit "x^2+y^2-1" --eval "$WORK/far.txt"
+expect_json "sdf parametric curve" 0 'j["dimension"] == 2 and j["shape"] == "sheet" and all(abs(a - b) < 1e-12 for a, b in zip(j["box"], [-1.002, -0.002, 1.002, 1.002])) and len(j["box"]) == 4' \
+  sdf --x t --y "t^2" --domain -1,1 --json
+printf '0.5 0.25\n0 0.5\n' >"$WORK/arc_points.txt"
+run sdf --x t --y "t^2" --domain -1,1 --eval "$WORK/arc_points.txt"
+if [[ $(status) == 0 ]] && python3 -c '
+import sys
+v = [float(line) for line in open(sys.argv[1])]
+sys.exit(0 if len(v) == 2 and abs(v[0]) < 1e-6 and v[1] > 0.1 else 1)' "$WORK/out"; then pass; else
+  fail "sdf --eval on a parametric curve: 0 on the arc, positive off it"
+fi
+expect_status "sdf curve domain count" 3 "invalid_domain in domain:" sdf --x t --y "t^2" --domain -1,1,0,1
+expect_json "render curve" 0 'j["dimension"] == 2' render --implicit "x^2+y^2-1" --size 16x16 -o "$WORK/c.png" --json
 
 # render (docs/render.md): a PNG, decoded back here with python3's zlib (8-bit RGB,
 # the five row filters), and the statistics of --json.
@@ -390,15 +505,22 @@ expect_status "render exact on a scene" 3 "method_not_applicable" \
 expect_status "render no output" 2 "missing -o" render --implicit "x"
 expect_status "render two surfaces" 2 "exactly one of" render --implicit "x" --x s --y t --z s -o "$WORK/u.png"
 expect_status "render parametric curve" 4 "no_single_equation" render --x t --y "t^2" --z "t^3" -o "$WORK/u.png"
-expect_status "render partial parametric" 2 "needs --x, --y and --z" render --x s --y t -o "$WORK/u.png"
+expect_status "render partial parametric" 2 "needs --x, --y and --z" render --x s --z t -o "$WORK/u.png"
 expect_status "render bad size" 2 "WIDTHxHEIGHT" render --implicit "x" --size 48 -o "$WORK/u.png"
 expect_status "render bad aa" 2 "--aa must be 1 to 8" render --implicit "x" --aa 9 -o "$WORK/u.png"
 expect_status "render bad eye" 2 "three numbers" render --implicit "x" --eye 1,2 -o "$WORK/u.png"
-expect_status "render eye at target" 3 "invalid_camera" render --implicit "x" --eye 0,0,0 -o "$WORK/u.png"
+expect_status "render eye at target" 3 "invalid_camera" render --implicit "x+z" --eye 0,0,0 -o "$WORK/u.png"
 expect_status "render unknown method" 3 "invalid_value" render --implicit "x" --method bisection -o "$WORK/u.png"
 expect_status "render too large" 3 "render_too_large" render --implicit "x" --size 4096x4096 -o "$WORK/u.png"
 expect_status "render parse error" 3 "unexpected_end" render --implicit "x^2+" -o "$WORK/u.png"
-expect_status "render unwritable output" 2 "cannot write" render --implicit "x" --size 8x8 -o /nonexistent-dir/u.png
+expect_status "render unwritable output" 2 "cannot write" render --implicit "x+z" --size 8x8 -o /nonexistent-dir/u.png
+# Issue 18: shape and domain as for sdf; the answer says what was drawn.
+expect_json "render patch" 0 'j["shape"] == "sheet" and j["dimension"] == 3 and j["hits"] > 0' \
+  render --x s --y t --z "s*t" --domain 0,1,0,1 --size 24x24 -o "$WORK/p.png" --json
+expect_json "render solid" 0 'j["shape"] == "solid" and j["dimension"] == 3' \
+  render --implicit "x^2+y^2+z^2-1" --shape solid --size 8x8 -o "$WORK/p.png" --json
+expect_status "render bad domain" 3 "invalid_domain" render --x s --y t --z "s*t" --domain 1,0,0,1 -o "$WORK/p.png"
+expect_status "render unknown shape" 2 "unknown --shape" render --implicit "x+z" --shape hollow -o "$WORK/p.png"
 expect_status "render timeout" 5 "time" render --implicit "x^2+y^2+z^2-1" --size 2048x2048 --aa 1 --timeout 0.001 -o "$WORK/u.png"
 
 # ---- issue 16: limits that hold on hostile input --------------------------------

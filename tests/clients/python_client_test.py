@@ -37,7 +37,7 @@ SCENE = {"type": "smooth_union", "k": 0.3, "children": [
     {"type": "sphere", "radius": 1, "name": "ball", "uniforms": ["radius"]},
     {"type": "translate", "offset": [1.5, 0, 0], "child": {"type": "torus", "major": 1, "minor": 0.25}}]}
 RENDER_STATS_KEYS = ["width", "height", "method", "mode", "precision", "rays", "mean_evaluations", "max_evaluations",
-                     "out_of_steps", "hits", "shading_evaluations", "threads", "elapsed_ms"]
+                     "out_of_steps", "hits", "shading_evaluations", "threads", "elapsed_ms", "shape", "dimension"]
 
 
 def setUpModule():
@@ -138,6 +138,19 @@ class LibraryTest(unittest.TestCase, PngChecks):
         self.assertEqual((answer["function"], answer["mode"], answer["degree"]), ("ball_sdf", "fast", 2))
         self.assertEqual(answer["box"], [-2, -2, -2, 2, 2, 2])
 
+    def test_sdf_patch_shape_and_domain(self):
+        # Issue 18: a parametric patch with its domain; the box is fitted to it and the
+        # answer says which shape was picked.
+        answer = self.client.sdf(x="s", y="t", z="s*t", parameters=["s", "t"], domain=[0, 1, 0, "1/2"])
+        self.assertEqual((answer["shape"], answer["dimension"], answer["degree"]), ("sheet", 3, 2))
+        self.assertAlmostEqual(answer["box"][4], 0.5 + 0.001, places=12)
+        solid = self.client.sdf(implicit="x^2+y^2+z^2-1", shape="solid")
+        self.assertEqual(solid["shape"], "solid")
+        with self.assertRaises(ic.ImplicitizerError) as caught:
+            self.client.sdf(x="s", y="t", z="s*t", domain=[1, 0, 0, 1])
+        self.assertEqual((caught.exception.status, caught.exception.code, caught.exception.field),
+                         (400, "invalid_domain", "domain[0]"))
+
     def test_sdf_scene_safe(self):
         answer = self.client.sdf(scene=SCENE, mode="safe", name="demo")
         self.assertIn("float demo_sdf(vec3 p)", answer["glsl"])
@@ -161,7 +174,8 @@ class LibraryTest(unittest.TestCase, PngChecks):
         json_png, stats = self.client.render(format="json", **request)
         self.assertEqual(json_png, png, "the renderer is deterministic")
         self.assertEqual(list(stats), RENDER_STATS_KEYS)
-        for key in ("width", "height", "method", "mode", "precision", "rays", "hits", "out_of_steps"):
+        for key in ("width", "height", "method", "mode", "precision", "rays", "hits", "out_of_steps", "shape",
+                    "dimension"):
             self.assertEqual(stats[key], header_stats[key], key)
         self.assertEqual(stats["rays"], 40 * 30 * 4)
 
@@ -261,6 +275,15 @@ class CommandLineTest(unittest.TestCase, PngChecks):
     def assert_ok(self, result):
         self.assertEqual(result.returncode, 0, result.stderr)
         return result.stdout
+
+    def test_sdf_command_shape_and_domain(self):
+        answer = json.loads(self.assert_ok(self.run_client(
+            "sdf", "--x", "s", "--y", "t", "--z", "s*t", "--domain", "0,1,0,1", "--shape", "sheet", "--json")))
+        self.assertEqual((answer["shape"], answer["dimension"]), ("sheet", 3))
+        result = self.run_client("sdf", "--x", "s", "--y", "t", "--z", "s*t", "--domain", "0,1,0")
+        self.assertEqual(result.returncode, 3, result.stderr)
+        self.assertIn("invalid_domain", result.stderr)
+        self.assertEqual(self.run_client("sdf", "--implicit", "x", "--shape", "hollow").returncode, 2)
 
     def test_implicitize_plain_and_json(self):
         self.assertEqual(self.assert_ok(self.run_client(
@@ -422,7 +445,7 @@ class CommandLineTest(unittest.TestCase, PngChecks):
             ("sdf", "--implicit", "x", "--scene", "s.json"),
             ("sdf", "--scene", os.path.join(self.tmp.name, "missing.json")),
             ("render", "--implicit", "x^2+y^2+z^2-1"),  # no -o
-            ("render", "--x", "s", "--y", "t", "-o", "a.png"),  # no --z
+            ("render", "--x", "s", "--z", "t", "-o", "a.png"),  # no --y
             ("render", "--implicit", "x^2+y^2+z^2-1", "--size", "64", "-o", "a.png"),
             ("frobnicate",),
         ]

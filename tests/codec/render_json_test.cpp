@@ -43,6 +43,13 @@ TEST(DecodeRenderRequest, ReadsEveryField) {
   EXPECT_EQ(p.antialiasing, 2u);
   EXPECT_EQ(p.method, MarchMethod::sphere);
   EXPECT_FALSE(decode_render_request(R"({"scene":{"type":"sphere","radius":1}})").implicit.size());
+
+  // The fields issue 18 adds, as for /v1/sdf: a curve (no z), its shape and domain.
+  const RenderRequest c = decode_render_request(R"({"x":"t","y":"t^2","shape":"sheet","domain":[-1,"1/2"]})");
+  ASSERT_TRUE(c.parametric.has_value());
+  EXPECT_EQ((*c.parametric)[2], "");
+  EXPECT_EQ(c.shape, SdfShape::sheet);
+  EXPECT_EQ(c.domain, (std::vector<std::string>{"-1", "1/2"}));
 }
 
 TEST(DecodeRenderRequest, Refusals) {
@@ -52,7 +59,13 @@ TEST(DecodeRenderRequest, Refusals) {
   };
   EXPECT_EQ(code(R"({"implicit":"x","scene":{"type":"sphere","radius":1}})"), "invalid_value@scene");
   EXPECT_EQ(code(R"({"implicit":"x","x":"s","y":"t","z":"s"})"), "invalid_value@scene");
-  EXPECT_EQ(code(R"({"x":"s","y":"t"})"), "missing_field@z");
+  // x and y without z is a plane curve; without x or y it is nothing.
+  EXPECT_EQ(code(R"({"x":"s","z":"t"})"), "missing_field@y");
+  EXPECT_EQ(code(R"({"y":"s","z":"t"})"), "missing_field@x");
+  EXPECT_EQ(code(R"({"x":"s","y":"t","z":""})"), "invalid_value@z");
+  EXPECT_EQ(code(R"({"x":"s","y":"t","shape":"hollow"})"), "invalid_value@shape");
+  EXPECT_EQ(code(R"({"x":"s","y":"t","domain":"0,1"})"), "invalid_domain@domain");
+  EXPECT_EQ(code(R"({"x":"s","y":"t","domain":[0,null]})"), "invalid_domain@domain[1]");
   EXPECT_EQ(code(R"({})"), "missing_field@implicit");
   EXPECT_EQ(code(R"({"implicit":"x","width":-3})"), "wrong_type@width");
   EXPECT_EQ(code(R"({"implicit":"x","width":2.5})"), "wrong_type@width");

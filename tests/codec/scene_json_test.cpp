@@ -41,7 +41,7 @@ TEST(SceneJson, DecodesATreeWithEveryFieldKind) {
       {"type": "translate", "offset": [1, 0, 0], "child": {"type": "sphere", "radius": 0.5}},
       {"type": "implicit", "equation": "x^2+y^2-z", "box": [-1, -1, -1, 1, 1, "3/2"]},
       {"type": "parametric", "x": "s", "y": "t", "z": "s*t", "parameters": ["s", "t"],
-       "domain": [[0, 1], ["0", "1/2"]]}
+       "domain": [[0, 1], ["0", "1/2"]], "shape": "sheet"}
     ]})");
   EXPECT_EQ(root.kind, NodeKind::smooth_union);
   EXPECT_EQ(root.name, "blend");
@@ -59,6 +59,8 @@ TEST(SceneJson, DecodesATreeWithEveryFieldKind) {
   EXPECT_EQ(root.children[2].leaf.coordinates[2], "s*t");
   ASSERT_EQ(root.children[2].leaf.domain.size(), 2u);
   EXPECT_EQ(root.children[2].leaf.domain[1].second, Rational(1) / Rational(2));
+  EXPECT_EQ(root.children[2].leaf.shape, SdfShape::sheet);
+  EXPECT_EQ(root.children[1].leaf.shape, SdfShape::automatic);  // the default
   // JSON numbers are read as their shortest decimal: 0.1 is exactly 1/10.
   const SceneNode tenth =
       parse_scene_json(R"({"type": "parametric", "x": "s", "y": "t", "z": "s*t", "domain": [[0.1, 1], [0, 1e-3]]})");
@@ -139,10 +141,27 @@ TEST(SceneJson, ErrorsCarryCodesAndJsonPaths) {
   EXPECT_EQ(failure(R"({"type": "implicit", "equation": "x", "box": [0, 0, 0, 1, 1, -1]})"),
             Failure("invalid_box", "scene.box"));
   EXPECT_EQ(failure(R"({"type": "parametric", "x": "s", "y": "t"})"), Failure("missing_parameter", "scene.z"));
+  // Every mistake in a domain is invalid_domain at its path (issue 18), found by the
+  // decoder where it can be: the shape of the pairs, finite numbers, lo < hi.
   EXPECT_EQ(failure(R"({"type": "parametric", "x": "s", "y": "t", "z": "s*t", "domain": [[0, 1], [0]]})"),
-            Failure("invalid_value", "scene.domain[1]"));
+            Failure("invalid_domain", "scene.domain[1]"));
   EXPECT_EQ(failure(R"({"type": "parametric", "x": "s", "y": "t", "z": "s*t", "domain": [[0, 1], [1, 0]]})"),
+            Failure("invalid_domain", "scene.domain[1]"));
+  EXPECT_EQ(failure(R"({"type": "parametric", "x": "s", "y": "t", "z": "s*t", "domain": [[0, 1], [1, 1]]})"),
+            Failure("invalid_domain", "scene.domain[1]"));
+  EXPECT_EQ(failure(R"({"type": "parametric", "x": "s", "y": "t", "z": "s*t", "domain": [[0, "inf"], [0, 1]]})"),
+            Failure("invalid_domain", "scene.domain[0][1]"));
+  EXPECT_EQ(failure(R"({"type": "parametric", "x": "s", "y": "t", "z": "s*t", "domain": [[0, 1], [0, true]]})"),
+            Failure("invalid_domain", "scene.domain[1][1]"));
+  EXPECT_EQ(failure(R"({"type": "parametric", "x": "s", "y": "t", "z": "s*t", "domain": {"s": [0, 1]}})"),
             Failure("invalid_domain", "scene.domain"));
+  // The count against the parameters is the leaf's check, still invalid_domain.
+  EXPECT_EQ(failure(R"({"type": "parametric", "x": "s", "y": "t", "z": "s*t", "domain": [[0, 1]]})").first,
+            "invalid_domain");
+  EXPECT_EQ(failure(R"({"type": "implicit", "equation": "x", "shape": "hollow"})"),
+            Failure("invalid_value", "scene.shape"));
+  EXPECT_EQ(failure(R"({"type": "implicit", "equation": "x", "shape": 1})"), Failure("invalid_value", "scene.shape"));
+  EXPECT_EQ(failure(R"({"type": "sphere", "radius": 1, "shape": "sheet"})"), Failure("invalid_scene", "scene.shape"));
   EXPECT_EQ(failure(R"({"type": "implicit", "equation": "x", "domain": [[0, 1]]})"),
             Failure("invalid_scene", "scene.domain"));
   EXPECT_EQ(failure(R"({"type": "sphere", "radius": 1, "uniforms": ["radius"]})"),
@@ -208,22 +227,29 @@ TEST(SceneJson, EncodeSceneIsCanonicalAndReadsBack) {
   const std::string a = R"({"type": "union", "children": [
     {"type": "round_box", "radius": 0.1, "size": [1, 2, 3], "name": "b", "uniforms": ["radius"]},
     {"type": "parametric", "x": "s", "y": "t", "z": "s*t", "parameters": ["s", "t"],
-     "domain": [[0, "1/3"], [-1, 1]], "box": [-2, -2, -2, 2, 2, 0.5]},
+     "domain": [[0, "1/3"], [-1, 1]], "box": [-2, -2, -2, 2, 2, 0.5], "shape": "sheet"},
     {"type": "rotate", "angle": 0.7, "axis": [0, 0, 1], "child": {"type": "implicit", "equation": "x^2+y^2-z"}}]})";
   const std::string b = R"({"children": [
     {"size": [1, 2, 3], "uniforms": ["radius"], "name": "b", "radius": 0.1, "type": "round_box"},
     {"domain": [["0", "2/6"], [-1, 1.0]], "type": "parametric", "parameters": ["s", "t"], "z": "s*t", "y": "t",
-     "x": "s", "box": [-2, -2, -2, 2, 2, "1/2"]},
-    {"child": {"equation": "x^2+y^2-z", "type": "implicit"}, "axis": [0, 0, 1], "type": "rotate", "angle": 0.7}],
+     "x": "s", "shape": "sheet", "box": [-2, -2, -2, 2, 2, "1/2"]},
+    {"child": {"equation": "x^2+y^2-z", "type": "implicit", "shape": "auto"}, "axis": [0, 0, 1], "type": "rotate",
+     "angle": 0.7}],
     "type": "union"})";
   const std::string text = encode_scene(parse_scene_json(a));
   EXPECT_EQ(text, encode_scene(parse_scene_json(b)));
   EXPECT_EQ(encode_scene(parse_scene_json(text)), text);
   EXPECT_NE(text.find(R"("domain":[["0","1/3"],["-1","1"]])"), std::string::npos) << text;
+  // The shape is part of the key; auto, the default, is left out.
+  EXPECT_NE(text.find(R"("shape":"sheet")"), std::string::npos) << text;
+  EXPECT_EQ(text.find(R"("shape":"auto")"), std::string::npos) << text;
   // A different value is a different text.
   std::string c = a;
   c.replace(c.find("0.7"), 3, "0.8");
   EXPECT_NE(encode_scene(parse_scene_json(c)), text);
+  std::string d = a;
+  d.replace(d.find("sheet"), 5, "solid");
+  EXPECT_NE(encode_scene(parse_scene_json(d)), text);
 }
 
 }  // namespace

@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "implicitizer/core/errors.hpp"
 #include "service/service_support.hpp"
@@ -67,13 +70,67 @@ TEST(AnswerSdfRequest, SceneAnswersGlslUniformsAndLeaves) {
   EXPECT_EQ(answer.nodes, 3U);
   EXPECT_EQ(answer.degree, 2);
   const std::string json = encode_sdf_response(answer);
-  EXPECT_NE(json.find(R"("leaves":[{"implicit":"x*y-z","degree":2,"trimmed":true}])"), std::string::npos) << json;
+  EXPECT_NE(json.find(R"("leaves":[{"implicit":"x*y-z","degree":2,"trimmed":true,"shape":"sheet"}])"),
+            std::string::npos)
+      << json;
   EXPECT_NE(json.find(R"("uniforms":[{"name":"ball_radius","type":"float","default":1.0}])"), std::string::npos)
       << json;
   // An implicit surface has no uniforms, and says so.
   EXPECT_NE(
       encode_sdf_response(answer_sdf_request(decode_sdf_request(R"({"implicit": "x"})"))).find(R"("uniforms":[])"),
       std::string::npos);
+}
+
+TEST(DecodeSdfRequest, ReadsTheObjectItsShapeAndDomain) {
+  const SdfRequest p = decode_sdf_request(
+      R"({"x": "s", "y": "t", "z": "s*t", "parameters": ["s", "t"], "shape": "sheet", "domain": [0, 1, "-1/3", 0.5],)"
+      R"( "box": [-1, -1, -1, 1, 1, 1], "mode": "safe", "name": "saddle", "timeout_ms": 500})");
+  ASSERT_TRUE(p.parametric.has_value());
+  EXPECT_EQ(*p.parametric, (std::array<std::string, 3>{"s", "t", "s*t"}));
+  EXPECT_EQ(p.parameters, (std::optional<std::vector<std::string>>{{"s", "t"}}));
+  EXPECT_EQ(p.shape, SdfShape::sheet);
+  // Numbers as their shortest decimal (0.5), exact strings as given.
+  EXPECT_EQ(p.domain, (std::vector<std::string>{"0", "1", "-1/3", "0.5"}));
+  EXPECT_EQ(p.box.size(), 6u);
+  EXPECT_EQ(p.mode, SdfMode::safe);
+  EXPECT_EQ(p.timeout_seconds, std::optional<double>(0.5));
+  // x and y alone: a plane curve (z left empty).
+  const SdfRequest curve = decode_sdf_request(R"({"x": "t", "y": "t^2", "domain": [-1, 1], "box": [-1, 0, 1, 1]})");
+  EXPECT_EQ((*curve.parametric)[2], "");
+  EXPECT_EQ(curve.box.size(), 4u);
+  EXPECT_EQ(decode_sdf_request(R"({"implicit": "x"})").shape, SdfShape::automatic);
+
+  auto code = [](const char* body) {
+    const InputError e = input_error_of([&] { decode_sdf_request(body); });
+    return e.code() + "@" + e.field();
+  };
+  EXPECT_EQ(code(R"({"implicit": "x", "shape": "hollow"})"), "invalid_value@shape");
+  EXPECT_EQ(code(R"({"implicit": "x", "shape": true})"), "wrong_type@shape");
+  EXPECT_EQ(code(R"({"x": "s", "y": "t", "domain": 1})"), "invalid_domain@domain");
+  EXPECT_EQ(code(R"({"x": "s", "y": "t", "domain": [0, [1]]})"), "invalid_domain@domain[1]");
+  EXPECT_EQ(code(R"({"x": "s", "y": "t", "domain": [0, 1e400]})"), "invalid_json@");
+  EXPECT_EQ(code(R"({"x": "s", "z": "t"})"), "missing_field@y");
+  EXPECT_EQ(code(R"({"implicit": "x", "x": "s", "y": "t"})"), "invalid_value@scene");
+  EXPECT_EQ(code(R"({"implicit": "x", "dimension": 2})"), "unknown_field@dimension");
+}
+
+TEST(EncodeSdfResponse, ShapeDimensionAndTheBoxUsed) {
+  SdfAnswer answer;
+  answer.function = "c_sdf";
+  answer.box = {-1, -2, -3, 1, 2, 3};
+  answer.shape = SdfShape::sheet;
+  answer.dimension = 3;
+  std::string json = encode_sdf_response(answer);
+  EXPECT_NE(json.find(R"("mode":"fast","shape":"sheet","dimension":3,"box":[-1.0,-2.0,-3.0,1.0,2.0,3.0],)"),
+            std::string::npos)
+      << json;
+  // A curve's box is its plane box x0, y0, x1, y1.
+  answer.dimension = 2;
+  json = encode_sdf_response(answer);
+  EXPECT_NE(json.find(R"("dimension":2,"box":[-1.0,-2.0,1.0,2.0],)"), std::string::npos) << json;
+  // No shape for a scene of several nodes.
+  answer.shape.reset();
+  EXPECT_EQ(encode_sdf_response(answer).find("shape"), std::string::npos);
 }
 
 }  // namespace

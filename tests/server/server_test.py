@@ -130,10 +130,37 @@ def test_sdf(s):
                                  ({"scene": {"type": "sphere", "radius": 1, "name": "gl", "uniforms": ["radius"]}},
                                   "invalid_name", "scene.name"),
                                  ({"implicit": "x^2+s"}, "unknown_variable", "implicit"),
-                                 ({"implicit": "x^2", "box": [0, 0, 0, 1, 1]}, "invalid_box", "box")]:
+                                 ({"implicit": "x^2", "box": [0, 0, 0, 1, 1]}, "invalid_box", "box"),
+                                 ({"x": "s", "y": "t", "z": "s*t", "domain": [0, 1, 0]}, "invalid_domain", "domain"),
+                                 ({"x": "s", "y": "t", "z": "s*t", "domain": [0, 1, 1, 1]}, "invalid_domain",
+                                  "domain[2]"),
+                                 ({"x": "s", "y": "t", "z": "s*t", "domain": [0, "1/0", 0, 1]}, "invalid_domain",
+                                  "domain[1]"),
+                                 ({"implicit": "x^2+y^2+z^2-1", "domain": [0, 1]}, "invalid_domain", "domain"),
+                                 ({"implicit": "x^2+y^2+z^2-1", "shape": "hollow"}, "invalid_value", "shape"),
+                                 ({"scene": {"type": "sphere", "radius": 1}, "shape": "sheet"}, "invalid_value",
+                                  "shape"),
+                                 ({"scene": {"type": "parametric", "x": "s", "y": "t", "z": "s*t",
+                                             "domain": [[0, 1], [1, 0]]}}, "invalid_domain", "scene.domain[1]"),
+                                 ({"x": "s", "z": "t"}, "missing_field", "y")]:
         status, _, body = s.post_json("/v1/sdf", request)
         check(status == 400 and error_code(body) == code and body["error"].get("field") == field,
               "sdf %r: %s %r" % (request, status, body))
+    # Issue 18: a patch, its fitted box and the shape picked; the domain and the shape
+    # are part of the cache key.
+    patch = {"x": "s", "y": "t", "z": "s*t", "domain": [0, 1, 0, 1]}
+    status, headers, body = s.post_json("/v1/sdf", patch)
+    check(status == 200 and body.get("shape") == "sheet" and body.get("dimension") == 3 and headers.get("x-cache") ==
+          "miss" and [round(b, 9) for b in body.get("box", [])] == [-0.001, -0.001, -0.001, 1.001, 1.001, 1.001],
+          "sdf patch: %s %r" % (status, {k: v for k, v in body.items() if k != "glsl"}))
+    status, headers, body = s.post_json("/v1/sdf", dict(patch, domain=[0, 1, 0, 0.5]))
+    check(status == 200 and headers.get("x-cache") == "miss" and round(body["box"][4], 9) == 0.501,
+          "sdf patch, another domain: not the cached answer: %s %r" % (status, headers))
+    status, headers, _ = s.post_json("/v1/sdf", dict(patch, shape="solid"))
+    check(headers.get("x-cache") == "miss", "sdf patch, another shape: not the cached answer %r" % headers)
+    status, _, body = s.post_json("/v1/sdf", {"x": "t", "y": "t^2", "z": "t^3"})
+    check(status == 422 and error_code(body) == "no_single_equation" and len(body["error"].get("generators", [])) == 3,
+          "sdf space curve: %s %r" % (status, body))
 
 
 def test_render(s):
@@ -163,7 +190,9 @@ def test_render(s):
             ({"implicit": "x^2+y^2+z^2-1", "method": "bisection"}, 400, "invalid_value"),
             ({"implicit": "x^2+y^2+z^2-1", "eye": [0, 0, 0]}, 400, "invalid_camera"),
             ({"implicit": "x^2+", "width": 8}, 400, "unexpected_end"),
-            ({"x": "s", "y": "t"}, 400, "missing_field"),
+            ({"x": "s", "z": "t"}, 400, "missing_field"),
+            ({"x": "s", "y": "t", "z": "s*t", "domain": [0, 1, 1, 0]}, 400, "invalid_domain"),
+            ({"implicit": "x^2+y^2+z^2-1", "shape": "hollow"}, 400, "invalid_value"),
             ({"x": "t", "y": "t^2", "z": "t^3"}, 422, "no_single_equation")]:
         status, _, body = s.post_json("/v1/render", request)
         check(status == want_status and error_code(body) == want_code,

@@ -109,7 +109,7 @@ double read_timeout_seconds(const rapidjson::Value& v) {
 }
 
 std::vector<std::string> read_box_texts(const rapidjson::Value& v) {
-  if (!v.IsArray()) throw wrong_type("box", "an array of six numbers");
+  if (!v.IsArray()) throw wrong_type("box", "an array of numbers (six; four for a curve)");
   std::vector<std::string> box;
   for (rapidjson::SizeType i = 0; i < v.Size(); ++i) {
     const rapidjson::Value& x = v[i];

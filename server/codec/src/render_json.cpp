@@ -5,38 +5,10 @@
 
 #include "json_reader.hpp"
 #include "json_writer.hpp"
-#include "scene_value.hpp"
+#include "scene_request_json.hpp"
 
 namespace implicitizer {
 namespace {
-
-// The surface: a scene, a parametric x/y/z, or an implicit equation, exactly one.
-void read_surface(json::ObjectReader& reader, RenderRequest& request) {
-  const rapidjson::Value* scene = reader.take("scene");
-  const rapidjson::Value* implicit = reader.take("implicit");
-  const rapidjson::Value* coordinates[3] = {reader.take("x"), reader.take("y"), reader.take("z")};
-  const int parametric = (coordinates[0] ? 1 : 0) + (coordinates[1] ? 1 : 0) + (coordinates[2] ? 1 : 0);
-  if ((scene ? 1 : 0) + (implicit ? 1 : 0) + (parametric > 0 ? 1 : 0) > 1) {
-    throw InputError("invalid_value", "send one of implicit, x/y/z (parametric) or scene").in_field("scene");
-  }
-  if (scene) {
-    request.scene = decode_scene(*scene, "scene");
-  } else if (parametric > 0) {
-    static const char* const kNames[3] = {"x", "y", "z"};
-    std::array<std::string, 3> xyz;
-    for (int i = 0; i < 3; ++i) {
-      if (!coordinates[i]) {
-        throw InputError("missing_field",
-                         std::string("a parametric surface needs x, y and z; '") + kNames[i] + "' is missing")
-            .in_field(kNames[i]);
-      }
-      xyz[i] = json::read_string(*coordinates[i], kNames[i]);
-    }
-    request.parametric = xyz;
-  } else {
-    request.implicit = json::read_string(implicit ? *implicit : reader.require("implicit"), "implicit");
-  }
-}
 
 // A positive integer member (width, height, aa), left as it is when absent.
 template <typename Count>
@@ -96,11 +68,7 @@ RenderRequest decode_render_request(std::string_view body, const JsonParams& lim
   const rapidjson::Document document = json::parse_object(body, json::with_room_for_a_scene(limits));
   json::ObjectReader reader(document);
   RenderRequest request;
-  read_surface(reader, request);
-  if (const auto* v = reader.take("parameters")) request.parameters = json::read_strings(*v, "parameters");
-  const std::optional<std::string> mode = read_optional_string(reader, "mode");
-  if (const auto* v = reader.take("name")) request.name = json::read_string(*v, "name");
-  if (const auto* v = reader.take("box")) request.box = json::read_box_texts(*v);
+  const json::SceneRequestChoices choices = json::read_scene_request(reader, request);
   read_count(reader, "width", request.width);
   read_count(reader, "height", request.height);
   read_count(reader, "aa", request.antialiasing);
@@ -110,10 +78,10 @@ RenderRequest decode_render_request(std::string_view body, const JsonParams& lim
   const std::optional<std::string> precision = read_optional_string(reader, "precision");
   const std::optional<std::string> format = read_optional_string(reader, "format");
   if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = json::read_timeout_seconds(*v);
-  reader.finish(
-      "implicit, x, y, z, parameters, scene, mode, box, name, width, height, method, aa, eye, target, precision, "
-      "format, timeout_ms");
-  if (mode) request.mode = json::parse_choice(*mode, "mode", parse_sdf_mode);
+  reader.finish((std::string(json::kSceneRequestFields) +
+                 ", width, height, method, aa, eye, target, precision, format, timeout_ms")
+                    .c_str());
+  choices.apply(request);
   if (method) request.method = json::parse_choice(*method, "method", parse_march_method);
   if (precision) request.precision = json::parse_choice(*precision, "precision", parse_evaluation_precision);
   if (format) request.format = json::parse_choice(*format, "format", parse_render_format);
@@ -150,6 +118,12 @@ std::string encode_render_response(const RenderAnswer& answer, bool with_png) {
     w.Uint64(s.threads);
     w.Key("elapsed_ms");
     json::write_milliseconds(w, s.elapsed_ms);
+    if (answer.shape) {
+      w.Key("shape");
+      json::write_string(w, to_string(*answer.shape));
+    }
+    w.Key("dimension");
+    w.Int(answer.dimension);
     if (with_png) {
       w.Key("png_base64");
       json::write_string(w, encode_base64(answer.png));

@@ -79,13 +79,28 @@ SceneBox read_box(const rapidjson::Value& v, const std::string& field) {
   return box;
 }
 
+InputError invalid_domain(const std::string& message, const std::string& field) {
+  return InputError("invalid_domain", message).in_field(field);
+}
+
+// A leaf's domain: one [lo, hi] pair of exact numbers per parameter, lo < hi (the
+// count is the leaf's to check: it knows the parameters). Every mistake is
+// `invalid_domain` at its path, as for a request's own "domain".
 std::vector<std::pair<Rational, Rational>> read_domain(const rapidjson::Value& v, const std::string& field) {
-  if (!v.IsArray()) throw invalid_value("a domain is an array of [lo, hi] pairs, one per parameter", field);
+  if (!v.IsArray()) throw invalid_domain("a domain is an array of [lo, hi] pairs, one per parameter", field);
   std::vector<std::pair<Rational, Rational>> out;
   for (rapidjson::SizeType i = 0; i < v.Size(); ++i) {
     const std::string item = field + "[" + std::to_string(i) + "]";
-    if (!v[i].IsArray() || v[i].Size() != 2) throw invalid_value("an interval is a pair [lo, hi]", item);
-    out.emplace_back(read_exact(v[i][0], item + "[0]"), read_exact(v[i][1], item + "[1]"));
+    if (!v[i].IsArray() || v[i].Size() != 2) throw invalid_domain("an interval is a pair [lo, hi]", item);
+    Rational lo, hi;
+    try {
+      lo = read_exact(v[i][0], item + "[0]");
+      hi = read_exact(v[i][1], item + "[1]");
+    } catch (const InputError& e) {
+      throw invalid_domain(std::string(e.what()) + " (a domain's bounds are finite numbers)", e.field());
+    }
+    if (!(lo < hi)) throw invalid_domain("an interval needs lo < hi", item);
+    out.emplace_back(lo, hi);
   }
   return out;
 }
@@ -106,8 +121,8 @@ std::string allowed_keys(const NodeKindInfo& info) {
   std::string allowed = "type, name, uniforms";
   if (info.arity == NodeArity::nary) allowed += ", children";
   if (info.arity == NodeArity::unary) allowed += ", child";
-  if (info.kind == NodeKind::implicit) allowed += ", equation, box";
-  if (info.kind == NodeKind::parametric) allowed += ", x, y, z, parameters, domain, box";
+  if (info.kind == NodeKind::implicit) allowed += ", equation, shape, box";
+  if (info.kind == NodeKind::parametric) allowed += ", x, y, z, parameters, domain, shape, box";
   for (const ParameterSpec& p : info.parameters) allowed += ", " + std::string(p.name);
   return allowed;
 }
@@ -211,6 +226,12 @@ void SceneDecoder::read_member(const std::string& key, const rapidjson::Value& v
     node.leaf.parameter_names = read_strings(v, field);
   } else if (parametric && key == "domain") {
     node.leaf.domain = read_domain(v, field);
+  } else if ((implicit || parametric) && key == "shape") {
+    try {
+      node.leaf.shape = parse_sdf_shape(read_string(v, field));
+    } catch (const InputError& e) {
+      throw e.in_field(field);
+    }
   } else if ((implicit || parametric) && key == "box") {
     node.leaf.box = read_box(v, field);
   } else {
@@ -290,6 +311,12 @@ void write_leaf_members(SceneWriter& w, const SceneNode& node) {
       }
       w.EndArray();
     }
+  }
+  // Part of the canonical form (the cache key): auto is the default and is left out.
+  if ((node.kind == NodeKind::implicit || node.kind == NodeKind::parametric) &&
+      node.leaf.shape != SdfShape::automatic) {
+    w.Key("shape");
+    w.String(to_string(node.leaf.shape));
   }
   if (node.leaf.box) {
     w.Key("box");

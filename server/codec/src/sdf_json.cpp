@@ -5,7 +5,7 @@
 #include "implicitizer/codec/scene_json.hpp"
 #include "json_reader.hpp"
 #include "json_writer.hpp"
-#include "scene_value.hpp"
+#include "scene_request_json.hpp"
 
 namespace implicitizer {
 namespace {
@@ -20,6 +20,8 @@ void write_leaves(json::Writer& w, const std::vector<SdfLeafSummary>& leaves) {
     w.Int(leaf.degree);
     w.Key("trimmed");
     w.Bool(leaf.trimmed);
+    w.Key("shape");
+    json::write_string(w, to_string(leaf.shape));
     w.EndObject();
   }
   w.EndArray();
@@ -31,23 +33,10 @@ SdfRequest decode_sdf_request(std::string_view body, const JsonParams& limits) {
   const rapidjson::Document document = json::parse_object(body, json::with_room_for_a_scene(limits));
   json::ObjectReader reader(document);
   SdfRequest request;
-  const rapidjson::Value* scene = reader.take("scene");
-  const rapidjson::Value* implicit = reader.take("implicit");
-  if (scene && implicit) {
-    throw InputError("invalid_value", "send either implicit or scene, not both").in_field("scene");
-  }
-  if (scene) {
-    request.scene = decode_scene(*scene, "scene");
-  } else {
-    request.implicit = json::read_string(implicit ? *implicit : reader.require("implicit"), "implicit");
-  }
-  std::optional<std::string> mode;
-  if (const auto* v = reader.take("mode")) mode = json::read_string(*v, "mode");
-  if (const auto* v = reader.take("name")) request.name = json::read_string(*v, "name");
-  if (const auto* v = reader.take("box")) request.box = json::read_box_texts(*v);
+  const json::SceneRequestChoices choices = json::read_scene_request(reader, request);
   if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = json::read_timeout_seconds(*v);
-  reader.finish("implicit, scene, mode, box, name, timeout_ms");
-  if (mode) request.mode = json::parse_choice(*mode, "mode", parse_sdf_mode);
+  reader.finish((std::string(json::kSceneRequestFields) + ", timeout_ms").c_str());
+  choices.apply(request);
   return request;
 }
 
@@ -60,11 +49,22 @@ std::string encode_sdf_response(const SdfAnswer& answer) {
     json::write_string(w, answer.function);
     w.Key("mode");
     json::write_string(w, to_string(answer.mode));
+    if (answer.shape) {
+      w.Key("shape");
+      json::write_string(w, to_string(*answer.shape));
+    }
+    w.Key("dimension");
+    w.Int(answer.dimension);
     w.Key("box");
     // Full precision here (a box may be 1e-6 wide), not the 3 decimals of times.
     w.SetMaxDecimalPlaces(json::Writer::kDefaultMaxDecimalPlaces);
     w.StartArray();
-    for (double b : answer.box) w.Double(b);
+    // A curve's box is its plane box x0, y0, x1, y1 (its frame's z side is internal).
+    if (answer.dimension == 2) {
+      for (std::size_t i : {0, 1, 3, 4}) w.Double(answer.box[i]);
+    } else {
+      for (double b : answer.box) w.Double(b);
+    }
     w.EndArray();
     json::configure(w);
     w.Key("degree");

@@ -28,6 +28,8 @@ Response make_png_response(const RenderAnswer& answer) {
   response.set("X-Render-Mean-Evaluations", format_number(s.mean_evaluations()));
   response.set("X-Render-Max-Evaluations", std::to_string(s.max_evaluations));
   response.set("X-Render-Elapsed-Ms", format_number(s.elapsed_ms));
+  if (answer.shape) response.set("X-Render-Shape", to_string(*answer.shape));
+  response.set("X-Render-Dimension", std::to_string(answer.dimension));
   return response;
 }
 

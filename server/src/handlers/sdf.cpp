@@ -7,8 +7,19 @@ namespace implicitizer::server {
 
 std::string canonical_key(const SdfRequest& request) {
   std::string key = "sdf|";
-  append_key_field(key, request.scene ? encode_scene(*request.scene) : request.implicit);
-  append_key_field(key, request.scene ? "scene" : "implicit");
+  if (request.scene) {
+    append_key_field(key, encode_scene(*request.scene));
+    append_key_field(key, "scene");
+  } else if (request.parametric) {
+    for (const std::string& coordinate : *request.parametric) append_key_field(key, coordinate);
+    append_key_field(key, "parametric");
+    append_key_list(key, request.parameters);
+  } else {
+    append_key_field(key, request.implicit);
+    append_key_field(key, "implicit");
+  }
+  append_key_field(key, to_string(request.shape));
+  append_key_list(key, std::optional(request.domain));
   append_key_field(key, to_string(request.mode));
   append_key_list(key, std::optional(request.box));
   append_key_field(key, request.name);

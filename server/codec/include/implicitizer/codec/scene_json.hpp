@@ -4,9 +4,10 @@
 ///     {"type": KIND, PARAMETER: number | [x, y, z], ..., "name": N?, "uniforms": [P..]?,
 ///      "children": [NODE, NODE, ...] (union, intersection, difference, smooth_*)
 ///      | "child": NODE (translate, rotate, scale, ...)}
-/// with the leaves implicit {"equation": F, "box": [x0, y0, z0, x1, y1, z1]?} and
-/// parametric {"x": X, "y": Y, "z": Z, "parameters": [..]?, "domain": [[lo, hi], ..]?,
-/// "box": [..]?} (box and domain bounds: numbers or exact strings like "1/3").
+/// with the leaves implicit {"equation": F, "shape": S?, "box": [x0, y0, z0, x1, y1, z1]?}
+/// and parametric {"x": X, "y": Y, "z": Z, "parameters": [..]?, "domain": [[lo, hi], ..]?,
+/// "shape": S?, "box": [..]?} (box and domain bounds: numbers or exact strings like
+/// "1/3"; S is "auto", the default, "sheet" or "solid": sdf_shape.hpp).
 /// The numeric parameters of each kind are read from the kind table (scene_node.hpp),
 /// so a new kind needs no code here unless it has non-numeric fields.
 ///
@@ -15,7 +16,9 @@
 /// with the JSON path as field ("scene.children[1].radius"): `invalid_scene` (not
 /// an object, unknown or repeated key, missing "type", children where none belong),
 /// `unknown_node_type`, `missing_parameter`, `invalid_value` (wrong JSON type or
-/// length), `invalid_name` (a name that is not a string), `scene_too_large`
+/// length; a shape outside its list), `invalid_domain` (a domain that is not an array
+/// of [lo, hi] pairs of finite numbers with lo < hi, at "….domain[1]"; the count
+/// against the parameters is the leaf's check), `invalid_name` (a name that is not a string), `scene_too_large`
 /// (more than kMaxSceneNodes nodes or kMaxSceneDepth levels; checked while reading,
 /// so no input recurses deeper). compile_scene() checks the rest (ranges, names,
 /// uniforms, safety).

@@ -19,7 +19,7 @@
 #include "implicitizer/render/render_target.hpp"
 #include "implicitizer/scene/scene_node.hpp"
 #include "implicitizer/sdf/glsl_export.hpp"
-#include "implicitizer/service/sdf_request.hpp"  // the mode and the box as for /v1/sdf
+#include "implicitizer/service/scene_request.hpp"  // the object, shape, domain and box as for /v1/sdf
 
 namespace implicitizer {
 
@@ -30,18 +30,10 @@ enum class RenderFormat {
   json,  ///< encode_render_response with png_base64
 };
 
-/// The fields of a request; the surface and the box are still text (parsed under
-/// the budget), the choices typed.
-struct RenderRequest {
-  std::string implicit;  ///< F(x, y, z): the surface F = 0 (when neither parametric nor scene is given)
-  /// x, y, z of a parametric surface (implicitized by the library, then drawn as its
-  /// implicit equation: the whole surface, untrimmed).
-  std::optional<std::array<std::string, 3>> parametric;
-  std::optional<std::vector<std::string>> parameters;  ///< the parametric surface's parameters, in order
-  std::optional<SceneNode> scene;                      ///< a decoded scene (replaces the others)
-  SdfMode mode = SdfMode::fast;                        ///< docs/sdf.md
-  std::vector<std::string> box;                 ///< six exact numbers, or empty: [-2, 2]^3 (see parse_request_box)
-  std::string name = "surface";                 ///< the scene's name (as for /v1/sdf; it names nothing in a PNG)
+/// The fields of a request: the object, its shape, domain and box, mode and name as
+/// for /v1/sdf (scene_request.hpp; the name names nothing in a PNG), then how to draw
+/// it. A curve (dimension 2) is drawn in the plane.
+struct RenderRequest : SceneRequest {
   std::size_t width = 256;                      ///< pixels
   std::size_t height = 256;                     ///< pixels
   MarchMethod method = MarchMethod::sphere;     ///< how rays march
@@ -66,6 +58,8 @@ struct RenderAnswer {
   std::string png;    ///< the PNG file
   RenderStats stats;  ///< size, method, mode, rays, evaluations, hits, out of steps, time
   EvaluationPrecision precision = EvaluationPrecision::single;
+  int dimension = 3;              ///< 2: a plane curve, drawn in the plane
+  std::optional<SdfShape> shape;  ///< the shape drawn, when the object is one polynomial leaf
 };
 
 /// Parses "float" or "double"; throws InputError `invalid_value` (field "precision") otherwise.
@@ -85,12 +79,13 @@ void check_render_size(const RenderRequest& request, const RenderRequestParams& 
 
 /// Answers `request` under `budget` (whose deadline the request's timeout, when
 /// present, replaces), with `threads` render threads (0: one per core). Throws
-/// InputError: those of check_render_size(), parse errors and `unknown_variable`
-/// ("implicit"; "x", "y", "z" for a parametric surface), `invalid_value` ("scene":
-/// more than one of implicit, x/y/z, scene), `missing_field` ("x": some but not all of x, y, z), `invalid_box`,
-/// `invalid_camera` ("eye", "target"), `method_not_applicable` ("method": exact on a
-/// scene that is not one polynomial leaf), the errors of compile_scene();
-/// NoSingleEquation for a parametric surface that is not a surface; LimitExceeded.
+/// InputError: those of check_render_size(), `invalid_name`, those of
+/// make_request_scene() (one object, `invalid_box`, `invalid_domain`, parse errors
+/// of "implicit"), the errors of compile_scene() under the request's field names
+/// (rethrow_request_error: "implicit", "x", "domain", …), `invalid_camera` ("eye",
+/// "target"), `method_not_applicable` ("method": exact on a scene that is not one
+/// polynomial leaf); NoSingleEquation for a parametrization whose image is not a
+/// surface or curve; LimitExceeded.
 RenderAnswer answer_render_request(const RenderRequest& request, const Budget& budget = Budget(),
                                    const RenderRequestParams& limits = {}, std::size_t threads = 0);
 

@@ -2,8 +2,9 @@
 /// \file
 /// A distance-function request as the outside world states it (the contract's
 /// `POST /v1/sdf` body, or `implicitizer sdf`'s arguments), its answer, and the one
-/// function that computes it, shared by the CLI and the HTTP handler. The input is
-/// one implicit surface or a scene (docs/sdf.md, "Scenes"), in mode fast or safe.
+/// function that computes it, shared by the CLI and the HTTP handler. The input is an
+/// implicit surface or curve, a parametric surface or curve, or a scene (docs/sdf.md),
+/// compiled as a scene (scene_request.hpp), in mode fast or safe.
 
 #include <array>
 #include <cstdint>
@@ -15,20 +16,14 @@
 #include "implicitizer/scene/compiled_scene.hpp"
 #include "implicitizer/scene/scene_node.hpp"
 #include "implicitizer/sdf/glsl_export.hpp"
+#include "implicitizer/sdf/sdf_shape.hpp"
+#include "implicitizer/service/scene_request.hpp"
 
 namespace implicitizer {
 
-/// The fields of a request; the surface and the box are still text (exact numbers,
-/// parsed under the budget).
-struct SdfRequest {
-  std::string implicit;  ///< F(x, y, z): the surface F = 0 (used when `scene` is absent)
-  /// A scene, already decoded (parse_scene_json); replaces `implicit`.
-  std::optional<SceneNode> scene;
-  SdfMode mode = SdfMode::fast;
-  /// x0, y0, z0, x1, y1, z1 as exact numbers ("0.25", "1e-30", "-3/7"); empty:
-  /// the default box [-2, 2]^3.
-  std::vector<std::string> box;
-  std::string name = "surface";  ///< the function is NAME_sdf
+/// The fields of a request: the object, its shape, domain and box, mode and name
+/// (scene_request.hpp), and a timeout.
+struct SdfRequest : SceneRequest {
   /// Wall-time limit in seconds; absent means the caller's budget alone.
   std::optional<double> timeout_seconds;
 };
@@ -37,38 +32,52 @@ struct SdfRequest {
 struct SdfLeafSummary {
   std::string implicit;  ///< its equation F (a parametric leaf's, implicitized)
   std::int32_t degree = 0;
-  bool trimmed = false;  ///< a parametric patch trimmed to its box (an unsigned sheet)
+  bool trimmed = false;              ///< a parametric patch trimmed to its box (an unsigned sheet)
+  SdfShape shape = SdfShape::solid;  ///< what the leaf's value describes (never automatic)
 };
 
 /// What a request computed.
 struct SdfAnswer {
-  std::string glsl;                    ///< the source of `float NAME_sdf(vec3 p)`
-  std::string function;                ///< NAME_sdf
-  SdfMode mode = SdfMode::fast;        ///< the mode of the request
-  std::array<double, 6> box{};         ///< the box used, rounded to double
+  std::string glsl;              ///< the source of `float NAME_sdf(vec3 p)` (vec2 p: a curve)
+  std::string function;          ///< NAME_sdf
+  SdfMode mode = SdfMode::fast;  ///< the mode of the request
+  /// The frame box actually used (a fitted patch's, else the request's), rounded to
+  /// double; a curve's z side is its frame's and is not reported.
+  std::array<double, 6> box{};
+  int dimension = 3;  ///< 3: `NAME_sdf(vec3 p)`; 2: a plane curve, `NAME_sdf(vec2 p)`
+  /// The shape picked: the leaf's, for an implicit or parametric input or a scene
+  /// that is one polynomial leaf; absent for other scenes (each leaf says its own).
+  std::optional<SdfShape> shape;
   std::int32_t degree = 0;             ///< total degree of F; for a scene, the largest of its leaves (0: none)
   std::size_t nodes = 0;               ///< nodes of the scene (0: an implicit surface)
   std::vector<SceneUniform> uniforms;  ///< the scene's uniforms, in declaration order
   std::vector<SdfLeafSummary> leaves;  ///< the scene's polynomial leaves
 };
 
-/// "fast" or "safe": the mode's name in requests and answers (parse_sdf_mode reads it).
-const char* to_string(SdfMode mode);
+/// A request's scene, compiled: what answer_sdf_request() describes, and what
+/// `implicitizer sdf --eval` evaluates.
+struct CompiledSdfRequest {
+  RequestScene source;  ///< the scene and the options it was compiled with
+  CompiledScene scene;
+};
 
-/// The scene box of a request's `box` field: six exact numbers x0, y0, z0, x1, y1,
-/// z1 ("0.25", "1e-30", "-3/7"); empty: SceneBox::default_box(). Throws InputError
-/// `invalid_box` (field "box") when there are not six numbers; the frame's checks
-/// (hi > lo, magnitudes) are make_scene_frame()'s. Shared with POST /v1/render.
-SceneBox parse_request_box(const std::vector<std::string>& box, const Budget& budget = Budget());
+/// Compiles `request` under `budget` (whose deadline the request's timeout, when
+/// present, replaces). Throws what answer_sdf_request() throws.
+CompiledSdfRequest compile_sdf_request(const SdfRequest& request, const Budget& budget = Budget());
+
+/// What a compiled request answers: GLSL, function, box, shape, degree, …
+SdfAnswer describe_sdf_request(const CompiledSdfRequest& compiled);
 
 /// Answers `request` under `budget` (whose deadline the request's timeout, when
-/// present, replaces). Throws InputError with its field
-/// set: parse errors and `unknown_variable` ("implicit": only x, y, z may occur),
-/// `constant_polynomial` ("implicit"), `degree_too_high` ("implicit": mode safe,
-/// terms beyond fp32's range, see SafeSdf::build), `invalid_box` ("box": not six
-/// numbers, or hi <= lo), `invalid_name` ("name"); for a scene the errors of
-/// compile_scene() (fields are the node paths "scene.children[1].radius"), with the
-/// request's box as the scene box and its name as the scene's name.
+/// present, replaces): describe_sdf_request(compile_sdf_request(request, budget)).
+/// Throws InputError with its field set: `invalid_name` ("name"), those of
+/// make_request_scene() (one object, `invalid_box`, `invalid_domain`, parse errors),
+/// then the errors of compile_scene() under the request's field names (an implicit
+/// input's "implicit": `unknown_variable`, `constant_polynomial`, `degree_too_high`
+/// in mode safe where terms leave fp32's range; a parametric input's "x", "y", "z",
+/// "domain": `invalid_domain`, `unbounded_patch`; a scene's node paths
+/// "scene.children[1].radius"); NoSingleEquation for a parametrization whose image
+/// is not a surface or curve; LimitExceeded.
 SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& budget = Budget());
 
 }  // namespace implicitizer
