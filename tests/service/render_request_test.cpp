@@ -42,7 +42,7 @@ TEST(AnswerRenderRequest, LimitsAndChoices) {
   r.method = MarchMethod::exact;
   EXPECT_EQ(code(r), "method_not_applicable@method");
   r = RenderRequest{};
-  r.implicit = "x";
+  r.implicit = "x+z";  // a plane in space ("x" alone is a line, drawn flat without a camera)
   r.eye = std::array<double, 3>{0, 0, 0};
   EXPECT_EQ(code(r), "invalid_camera@eye");
 }
