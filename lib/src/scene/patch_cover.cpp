@@ -333,9 +333,76 @@ std::vector<ParameterDomain> split_domain(const ParameterDomain& domain) {
   return out;
 }
 
+// The safe bound of Z on the frame box widened by h/2: inside the frame its box term
+// (the distance to the widened box's faces, >= h/2) never clips the bound for cells of
+// half diagonal below h/2. None when F's terms exceed fp32 (degree_too_high).
+std::optional<SafeSdf> safe_bound_around(const Polynomial& equation, const SceneBox& frame_box, double h,
+                                         const Budget& budget) {
+  SceneBox wide = frame_box;
+  const Rational pad = to_rational(mpq_class(h / 2));
+  for (std::size_t i = 0; i < 3; ++i) {
+    wide.lo[i] = wide.lo[i] - pad;
+    wide.hi[i] = wide.hi[i] + pad;
+  }
+  try {
+    return SafeSdf::build(equation, wide, budget);
+  } catch (const InputError& e) {
+    if (e.code() != "degree_too_high") throw;
+  }
+  return std::nullopt;
+}
+
+// The leaves of the quadtree `nodes` (root 0) in depth-first order.
+std::vector<std::size_t> leaves_in_order(const std::vector<Node>& nodes) {
+  std::vector<std::size_t> order;
+  std::vector<std::size_t> stack{0};
+  while (!stack.empty()) {
+    const std::size_t i = stack.back();
+    stack.pop_back();
+    if (nodes[i].children.empty()) order.push_back(i);
+    for (auto c = nodes[i].children.rbegin(); c != nodes[i].children.rend(); ++c) stack.push_back(*c);
+  }
+  return order;
+}
+
 Box widened(const Vec3<float>& lo, const Vec3<float>& hi, double by) {
   const V w{by, by, by};
   return {V{lo.x, lo.y, lo.z} - w, V{hi.x, hi.y, hi.z} + w};
+}
+
+// The quadtree over `domain`, largest boxes split first so that the leaf cap leaves a
+// uniform refinement behind: a node is split while its box is larger than
+// params.tolerance·h and, widened by params.margin·h, may reach a far cell of `far`
+// (none: nothing to trim against).
+std::vector<Node> refine_quadtree(const Parametrization& parametrization, const ParameterDomain& domain,
+                                  FarCellSearch* far, double h, const PatchCoverParams& params, const Budget& budget,
+                                  PatchCoverStats& stats) {
+  const PatchBoundsParams bounds_params{params.tightening_depth, PatchBoundsParams().max_denominator_depth};
+  std::vector<Node> nodes{make_node(parametrization, domain, budget, bounds_params)};
+  const auto smaller = [&](std::size_t a, std::size_t b) { return nodes[a].largest_side < nodes[b].largest_side; };
+  std::priority_queue<std::size_t, std::vector<std::size_t>, decltype(smaller)> open(smaller);
+  open.push(0);
+  std::size_t leaves = 1;
+  const std::size_t fan_out = std::size_t{1} << domain.intervals.size();
+  while (!open.empty()) {
+    budget.check(kWhere);
+    const std::size_t i = open.top();
+    open.pop();
+    if (nodes[i].largest_side <= params.tolerance * h) continue;
+    if (far == nullptr || !far->reaches_far(widened(nodes[i].lo, nodes[i].hi, params.margin * h))) continue;
+    if (leaves + fan_out - 1 > params.max_leaves) {
+      ++stats.unresolved;
+      stats.tolerance_reached = std::max(stats.tolerance_reached, nodes[i].largest_side / h);
+      continue;
+    }
+    for (ParameterDomain& half : split_domain(nodes[i].domain)) {
+      nodes[i].children.push_back(nodes.size());
+      nodes.push_back(make_node(parametrization, std::move(half), budget, bounds_params));
+      open.push(nodes.size() - 1);
+    }
+    leaves += fan_out - 1;
+  }
+  return nodes;
 }
 
 }  // namespace
@@ -355,23 +422,7 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
   }
   if (plane_curve) frame.lo.z = frame.hi.z = 0;
 
-  // The safe bound of Z on the frame box widened by h/2: inside the frame its box
-  // term (the distance to the widened box's faces, >= h/2) never clips the bound
-  // for cells of half diagonal below h/2.
-  std::optional<SafeSdf> safe;
-  {
-    SceneBox wide = frame_box;
-    const Rational pad = to_rational(mpq_class(h / 2));
-    for (std::size_t i = 0; i < 3; ++i) {
-      wide.lo[i] = wide.lo[i] - pad;
-      wide.hi[i] = wide.hi[i] + pad;
-    }
-    try {
-      safe = SafeSdf::build(equation, wide, budget);
-    } catch (const InputError& e) {
-      if (e.code() != "degree_too_high") throw;
-    }
-  }
+  const std::optional<SafeSdf> safe = safe_bound_around(equation, frame_box, h, budget);
   stats.proven_empty_cells = safe.has_value();
 
   // Far cells. The sample points carry the rounding of a double evaluation of the
@@ -397,44 +448,12 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
   FarCellSearch far(region, safe, sample, reach - 1e-12 * std::max(extent, h), params.resolution * h, budget, params,
                     stats);
 
-  // The quadtree, largest boxes split first so that the leaf cap leaves a uniform
-  // refinement behind.
-  const PatchBoundsParams bounds_params{params.tightening_depth, PatchBoundsParams().max_denominator_depth};
-  std::vector<Node> nodes{make_node(parametrization, domain, budget, bounds_params)};
-  const auto smaller = [&](std::size_t a, std::size_t b) { return nodes[a].largest_side < nodes[b].largest_side; };
-  std::priority_queue<std::size_t, std::vector<std::size_t>, decltype(smaller)> open(smaller);
-  open.push(0);
-  std::size_t leaves = 1;
-  const std::size_t fan_out = std::size_t{1} << domain.intervals.size();
-  while (!open.empty()) {
-    budget.check(kWhere);
-    const std::size_t i = open.top();
-    open.pop();
-    if (nodes[i].largest_side <= params.tolerance * h) continue;
-    if (!searched || !far.reaches_far(widened(nodes[i].lo, nodes[i].hi, params.margin * h))) continue;
-    if (leaves + fan_out - 1 > params.max_leaves) {
-      ++stats.unresolved;
-      stats.tolerance_reached = std::max(stats.tolerance_reached, nodes[i].largest_side / h);
-      continue;
-    }
-    for (ParameterDomain& half : split_domain(nodes[i].domain)) {
-      nodes[i].children.push_back(nodes.size());
-      nodes.push_back(make_node(parametrization, std::move(half), budget, bounds_params));
-      open.push(nodes.size() - 1);
-    }
-    leaves += fan_out - 1;
-  }
+  const std::vector<Node> nodes =
+      refine_quadtree(parametrization, domain, searched ? &far : nullptr, h, params, budget, stats);
   stats.nodes = nodes.size();
 
   // The leaves in depth-first order, clusters of cluster_size, the last one padded.
-  std::vector<std::size_t> order;
-  std::vector<std::size_t> stack{0};
-  while (!stack.empty()) {
-    const std::size_t i = stack.back();
-    stack.pop_back();
-    if (nodes[i].children.empty()) order.push_back(i);
-    for (auto c = nodes[i].children.rbegin(); c != nodes[i].children.rend(); ++c) stack.push_back(*c);
-  }
+  std::vector<std::size_t> order = leaves_in_order(nodes);
   stats.leaves = order.size();
   cover.cluster_size_ = params.cluster_size;
   if (cover.cluster_size_ == 0) {
@@ -455,20 +474,24 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
     cover.float_.cluster_lo.push_back(clo);
     cover.float_.cluster_hi.push_back(chi);
   }
-  // Double boxes: the same float corners (exact in double), so both evaluations
-  // bound the distance to the same union.
+  cover.copy_boxes_to_double();
+  return cover;
+}
+
+void PatchCover::copy_boxes_to_double() {
+  // The same float corners (exact in double), so both evaluations bound the distance
+  // to the same union.
   const auto to_double = [](const std::vector<Vec3<float>>& v) {
-    std::vector<V> out;
+    std::vector<Vec3<double>> out;
     for (const auto& p : v) out.push_back({p.x, p.y, p.z});
     return out;
   };
-  cover.double_.lo = to_double(cover.float_.lo);
-  cover.double_.hi = to_double(cover.float_.hi);
-  cover.double_.cluster_lo = to_double(cover.float_.cluster_lo);
-  cover.double_.cluster_hi = to_double(cover.float_.cluster_hi);
-  cover.float_.shrink = 1.0f - 0x1p-17f;
-  cover.double_.shrink = 1.0 - 0x1p-46;
-  return cover;
+  double_.lo = to_double(float_.lo);
+  double_.hi = to_double(float_.hi);
+  double_.cluster_lo = to_double(float_.cluster_lo);
+  double_.cluster_hi = to_double(float_.cluster_hi);
+  float_.shrink = 1.0f - 0x1p-17f;
+  double_.shrink = 1.0 - 0x1p-46;
 }
 
 Vec3<float> PatchCover::lo() const {

@@ -143,6 +143,9 @@ class PatchCover {
   static constexpr double kClamp = 1e18;
 
  private:
+  // Sets the double boxes to the float ones (exact in double) and both shrink factors.
+  void copy_boxes_to_double();
+
   template <typename T>
   struct Boxes {
     std::vector<Vec3<T>> lo, hi;                  // cluster_size_ per cluster
