@@ -479,8 +479,10 @@ test('the hyperbolic paraboloid, Enneper\'s surface and a bicubic patch are two-
     const sides = sideCounts(canvas.rgb, mask);
     t.diagnostic(`${name}: ${surface} surface pixels, ${sides.warm} warm (F > 0 side), ${sides.blue} blue (F < 0 side)`);
     assert.ok(surface > 0.02 * canvas.width * canvas.height, `${name}: the canvas shows the surface (${surface} pixels)`);
-    assert.ok(sides.warm > 0.01 * surface, `${name}: the F > 0 side appears (${sides.warm} of ${surface})`);
-    assert.ok(sides.blue > 0.01 * surface, `${name}: the F < 0 side appears (${sides.blue} of ${surface})`);
+    // 0.5 %: the default view sees the bicubic patch almost only from its F > 0 side
+    // (its F < 0 side shows at a fold, 0.8 % of the surface); a one-sided shader shows none.
+    assert.ok(sides.warm > 0.005 * surface, `${name}: the F > 0 side appears (${sides.warm} of ${surface})`);
+    assert.ok(sides.blue > 0.005 * surface, `${name}: the F < 0 side appears (${sides.blue} of ${surface})`);
 
     const sheet = await renderSameView(canvas.view, {}, t);
     const sheetMask = silhouette(sheet.rgb, sheet.width, sheet.height);
@@ -526,7 +528,9 @@ test('a plane curve is drawn in 2-D, as the CPU renderer draws it', async (t) =>
   const gpuMask = new Uint8Array(width * height), cpuMask = new Uint8Array(width * height);
   for (let p = 0; p < width * height; ++p) {
     if (line(canvas.rgb, p)) (gpuMask[p] = 1), ++gpuLine;
-    if (Math.min(canvas.rgb[3 * p], canvas.rgb[3 * p + 1], canvas.rgb[3 * p + 2]) > 200) ++light;
+    // Light: the paper (0.98), the margin (0.90) and a closed curve's tint (0.99, 0.87, 0.72),
+    // whose darkest channel is 184 of 255; a shaded 3-D solid is far darker.
+    if (Math.min(canvas.rgb[3 * p], canvas.rgb[3 * p + 1], canvas.rgb[3 * p + 2]) > 175) ++light;
   }
   t.diagnostic(`lemniscate: ${gpuLine} line pixels, ${light} light (paper, grid, tint) of ${width * height}`);
   assert.ok(light > 0.8 * width * height, 'a light 2-D picture, not a shaded solid');
