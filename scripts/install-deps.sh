@@ -18,7 +18,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 packages=(
   build-essential cmake make pkg-config g++
-  libgmp-dev libmpfr-dev libflint-dev libcgal-dev
+  libgmp-dev libmpfr-dev libflint-dev libcgal-dev libeigen3-dev
   libboost-dev rapidjson-dev
   libpng-dev
   googletest libgtest-dev libgmock-dev
