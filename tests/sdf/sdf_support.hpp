@@ -1,13 +1,16 @@
 #pragma once
 // Shared by the tests of lib/sdf: surfaces, exact reference values, glslangValidator.
 
+#include <gmpxx.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -46,6 +49,99 @@ inline const Polynomial& tp33_implicit() {
     std::abort();
   }();
   return f;
+}
+
+// The exact sign of F at float points, fast enough for 10^4 points of a degree-18 F:
+// F's coefficients made integers (times the positive lcm of their denominators), the
+// point's coordinates written as X/W, Y/W, Z/W with W = 2^E, and W^n·F(X/W, Y/W, Z/W)
+// evaluated as an integer by nested Horner (each level homogeneous: a coefficient
+// enters as k·W^(m - c), a shift). Rational arithmetic on Polynomial::evaluate takes
+// several times longer at this degree.
+class ExactSign {
+ public:
+  explicit ExactSign(const Polynomial& f) : degree_(f.total_degree()) {
+    mpz_class lcm = 1;
+    for (std::size_t t = 0; t < f.num_terms(); ++t) {
+      const mpz_class d = to_mpq(f.coefficient(t)).get_den();
+      mpz_lcm(lcm.get_mpz_t(), lcm.get_mpz_t(), d.get_mpz_t());
+    }
+    rows_.assign(static_cast<std::size_t>(degree_ + 1), std::vector<std::vector<mpz_class>>());
+    for (std::size_t a = 0; a <= static_cast<std::size_t>(degree_); ++a) {
+      rows_[a].assign(static_cast<std::size_t>(degree_) + 1 - a, std::vector<mpz_class>());
+      for (std::size_t b = 0; b < rows_[a].size(); ++b) rows_[a][b].assign(rows_[a].size() - b, mpz_class(0));
+    }
+    for (std::size_t t = 0; t < f.num_terms(); ++t) {
+      const std::vector<std::int32_t> e = f.exponents(t);
+      rows_[e[0]][e[1]][e[2]] = mpq_class(to_mpq(f.coefficient(t)) * lcm).get_num();
+    }
+  }
+
+  // -1, 0 or 1: the sign of F at exactly (x, y, z).
+  int sign(float x, float y, float z) const {
+    const float p[3] = {x, y, z};
+    long shift = 0;  // E
+    for (float c : p) {
+      int e = 0;
+      if (c != 0) std::frexp(c, &e);
+      if (c != 0) shift = std::max(shift, 24L - e);
+    }
+    mpz_class q[3];  // p_i·2^E, integers
+    for (std::size_t i = 0; i < 3; ++i) {
+      int e = 0;
+      const double mantissa = std::ldexp(std::frexp(static_cast<double>(p[i]), &e), 24);  // an integer
+      q[i] = static_cast<long>(mantissa);
+      if (p[i] != 0) q[i] <<= static_cast<mp_bitcnt_t>(shift - (24 - e));
+    }
+    mpz_class outer = 0, middle, inner, term;
+    for (std::size_t a = rows_.size(); a-- > 0;) {
+      middle = 0;
+      for (std::size_t b = rows_[a].size(); b-- > 0;) {
+        const std::vector<mpz_class>& ks = rows_[a][b];
+        const std::size_t m = ks.size() - 1;  // n - a - b
+        inner = 0;
+        for (std::size_t c = ks.size(); c-- > 0;) {
+          inner *= q[2];
+          if (ks[c] != 0) {
+            term = ks[c];
+            term <<= static_cast<mp_bitcnt_t>(shift) * (m - c);
+            inner += term;
+          }
+        }
+        middle *= q[1];
+        middle += inner;
+      }
+      outer *= q[0];
+      outer += middle;
+    }
+    return sgn(outer);
+  }
+
+ private:
+  std::int32_t degree_;
+  std::vector<std::vector<std::vector<mpz_class>>> rows_;  // [a][b][c]: the integer coefficient of x^a y^b z^c
+};
+
+// tp_33's box (docs/sdf.md §4) and 10^4 uniform random float points in it (seed 19),
+// with F's exact signs there; computed once (about a second).
+struct SignSample {
+  SceneBox box;
+  std::vector<std::array<float, 3>> points;
+  std::vector<int> signs;
+};
+inline const SignSample& tp33_sign_sample() {
+  static const SignSample sample = [] {
+    SignSample s{box_of("-8", "-10", "-18", "8", "6", "4"), {}, {}};
+    const ExactSign exact(tp33_implicit());
+    std::mt19937 random(19);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int i = 0; i < 10000; ++i) {
+      s.points.push_back({static_cast<float>(-8 + 16 * unit(random)), static_cast<float>(-10 + 16 * unit(random)),
+                          static_cast<float>(-18 + 22 * unit(random))});
+      s.signs.push_back(exact.sign(s.points.back()[0], s.points.back()[1], s.points.back()[2]));
+    }
+    return s;
+  }();
+  return sample;
 }
 
 // F/|∇F| at the point (exactly the doubles given), in exact arithmetic, then rounded:
@@ -106,7 +202,8 @@ inline std::string glslang_errors(const std::string& header, const std::string& 
   const std::string path = std::string(dir) + "/shader.frag";
   {
     std::ofstream out(path);
-    out << header << "\n" << function << "\nout vec4 colour;\nvoid main() {\n"
+    out << header << "\n"
+        << function << "\nout vec4 colour;\nvoid main() {\n"
         << "  colour = vec4(" << name << "(vec3(0.5, -0.25, 0.125)));\n}\n";
   }
   const std::string log = std::string(dir) + "/log.txt";

@@ -43,8 +43,12 @@ struct ProgramStep {
   ProgramRegister target;
   ProgramRegister by = ProgramRegister::u;      ///< the multiplier (multiply*)
   ProgramRegister source = ProgramRegister::u;  ///< copy and multiply_add
-  double constant = 0;  ///< the coefficient, rounded to double, then (float runs) to float
-  float constant_float = 0;  ///< float(constant): what the GLSL states
+  double constant = 0;                          ///< the coefficient, rounded to double, then (float runs) to float
+  float constant_float = 0;                     ///< float(constant): what the GLSL states
+  /// Where the constant of a coefficient of G (load_constant, multiply_add_constant)
+  /// sits in a cell's row of the coefficient table; -1 for the structural zeros of
+  /// the derivative registers. constant and constant_float are cell 0's values.
+  std::int32_t coefficient = -1;
 };
 
 /// What a program computes. Safe mode (safe_sdf.hpp) evaluates the majorant
@@ -72,8 +76,17 @@ class PolynomialProgram {
   /// subnormals. With ProgramOutputs::value only the steps of G's value are
   /// emitted: the same steps, in the same order, as the value part of the full
   /// program, so both round identically. Precondition: g is not zero.
-  static PolynomialProgram compile(const Polynomial& g,
-                                   ProgramOutputs outputs = ProgramOutputs::value_and_gradient);
+  static PolynomialProgram compile(const Polynomial& g, ProgramOutputs outputs = ProgramOutputs::value_and_gradient);
+
+  /// One program for several polynomials ("cells": the local expansions of one G
+  /// over sub-boxes, safe_sdf.hpp): the steps of the union of their supports, and a
+  /// table with one row of coefficients per cell (0 where a cell lacks a term, or
+  /// its float is flushed). The steps are the same for every cell, so one GLSL text
+  /// serves all of them, reading its constants from an array indexed by the cell.
+  /// With one polynomial this is compile(). Precondition: cells is not empty, every
+  /// polynomial is in a ring of exactly three variables.
+  static PolynomialProgram compile_cells(const std::vector<Polynomial>& cells,
+                                         ProgramOutputs outputs = ProgramOutputs::value_and_gradient);
 
   /// The steps, in execution order.
   const std::vector<ProgramStep>& steps() const { return steps_; }
@@ -83,12 +96,52 @@ class PolynomialProgram {
   ProgramOutputs outputs() const { return outputs_; }
   /// How many nonzero coefficients of g were dropped because their float is not
   /// a normal number (an error bound must account for them: safe_sdf.hpp).
+  /// With several cells, the largest such count of one cell.
   std::size_t dropped_terms() const { return dropped_terms_; }
+  /// How many cells (rows of the coefficient table) the program has; 1 for compile().
+  std::size_t cells() const { return cells_; }
+  /// The length of one row of the coefficient table.
+  std::size_t coefficients_per_cell() const { return per_cell_; }
+  /// The coefficient table as floats, row by row (cells() × coefficients_per_cell()).
+  const std::vector<float>& table_float() const { return table_float_; }
 
   /// Runs the steps in T (float or double). Float runs use constant_float, double
   /// runs constant.
   template <typename T>
   ValueAndGradient<T> evaluate(T u, T v, T w) const {
+    return run(u, v, w, [](const ProgramStep& s) { return constant_as<T>(s); });
+  }
+
+  /// evaluate() with the coefficients of row `cell` (< cells()).
+  template <typename T>
+  ValueAndGradient<T> evaluate_in_cell(std::size_t cell, T u, T v, T w) const {
+    if (cell == 0) return evaluate(u, v, w);
+    const std::size_t row = cell * per_cell_;
+    return run(u, v, w, [&](const ProgramStep& s) {
+      return s.coefficient < 0 ? T(0) : table_as<T>(row + static_cast<std::size_t>(s.coefficient));
+    });
+  }
+
+  /// GLSL statements that run the steps: one declaration of the registers a … gw
+  /// (a, b, g for a value-only program; initialised to 0.0), then one statement
+  /// per step, each line starting with `indent`. The inputs must be float
+  /// variables named u, v, w in scope; the result is left in g, gu, gv, gw (g).
+  /// Two programs in one function need a block `{ ... }` each.
+  ///
+  /// With a non-empty `table` coefficient i is read as `TABLEi[cell]` (or
+  /// `abs(TABLEi[cell])` when `absolute`: the majorant reads G's table), `cell` an int
+  /// in scope; see glsl_table.
+  std::string to_glsl(const std::string& indent, const std::string& table = "", bool absolute = false) const;
+
+  /// `const float NAMEi[C] = float[C](...);` for each column i: coefficient i of every
+  /// cell (the float table by column).
+  std::string glsl_table(const std::string& name) const;
+
+ private:
+  static std::size_t index(ProgramRegister r) { return static_cast<std::size_t>(r); }
+  // The steps in T, each constant given by `constant(step)`.
+  template <typename T, typename Constant>
+  ValueAndGradient<T> run(T u, T v, T w, Constant constant) const {
     std::array<T, kProgramRegisters> r{};
     r[index(ProgramRegister::u)] = u;
     r[index(ProgramRegister::v)] = v;
@@ -97,7 +150,7 @@ class PolynomialProgram {
       T& t = r[index(s.target)];
       switch (s.kind) {
         case ProgramStep::Kind::load_constant:
-          t = constant_as<T>(s);
+          t = constant(s);
           break;
         case ProgramStep::Kind::copy:
           t = r[index(s.source)];
@@ -109,23 +162,13 @@ class PolynomialProgram {
           t = t * r[index(s.by)] + r[index(s.source)];
           break;
         case ProgramStep::Kind::multiply_add_constant:
-          t = t * r[index(s.by)] + constant_as<T>(s);
+          t = t * r[index(s.by)] + constant(s);
           break;
       }
     }
     return {r[index(ProgramRegister::g)],
             {r[index(ProgramRegister::gu)], r[index(ProgramRegister::gv)], r[index(ProgramRegister::gw)]}};
   }
-
-  /// GLSL statements that run the steps: one declaration of the registers a … gw
-  /// (a, b, g for a value-only program; initialised to 0.0), then one statement
-  /// per step, each line starting with `indent`. The inputs must be float
-  /// variables named u, v, w in scope; the result is left in g, gu, gv, gw (g).
-  /// Two programs in one function need a block `{ ... }` each.
-  std::string to_glsl(const std::string& indent) const;
-
- private:
-  static std::size_t index(ProgramRegister r) { return static_cast<std::size_t>(r); }
   template <typename T>
   static T constant_as(const ProgramStep& s) {
     if constexpr (sizeof(T) == sizeof(float)) {
@@ -135,7 +178,19 @@ class PolynomialProgram {
     }
   }
 
+  template <typename T>
+  T table_as(std::size_t i) const {
+    if constexpr (sizeof(T) == sizeof(float)) {
+      return table_float_[i];
+    } else {
+      return static_cast<T>(table_[i]);
+    }
+  }
+
   std::vector<ProgramStep> steps_;
+  std::vector<double> table_;       // cells_ rows of per_cell_ coefficients (flushed ones 0)
+  std::vector<float> table_float_;  // the same, rounded to float
+  std::size_t cells_ = 1, per_cell_ = 0;
   std::int32_t degree_ = 0;
   ProgramOutputs outputs_ = ProgramOutputs::value_and_gradient;
   std::size_t dropped_terms_ = 0;

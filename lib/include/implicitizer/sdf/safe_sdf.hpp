@@ -44,13 +44,15 @@
 ///
 /// Fails (returns a small but correct value) near singular points of the surface,
 /// where |∇G| vanishes on it, and where Horner's error exceeds |G| (degree 18 in
-/// the power basis: docs/sdf.md §4). Cost: three passes of the program (G and ∇G,
-/// Ĝ and ∇Ĝ, Ĝ at r1) plus one value-only pass per chord step.
+/// the power basis: docs/sdf.md §4; build() then splits the box into cells with
+/// their own exact expansions, which resolves most such points: §6 "Cells"). Cost: three passes of the program (G and
+/// ∇G, Ĝ and ∇Ĝ, Ĝ at r1) plus one value-only pass per chord step.
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "implicitizer/polynomial/polynomial.hpp"
 #include "implicitizer/sdf/polynomial_program.hpp"
@@ -78,6 +80,14 @@ class SafeSdf {
   /// The majorant may not exceed this where it is evaluated (|u_i| + r <= 2 + r_cap):
   /// squares of gradients and products such as |∇G|² stay below 2^120.
   static constexpr double kMajorantLimit = 0x1p50;
+  /// The most cells per axis build() splits the box into by default (a power of 2).
+  /// 4 resolves more (docs/sdf.md §6: 13 zeros in 10^4 points of tp_33 against 383
+  /// with 2), but its GLSL holds 64 coefficients per term, and Mesa's compiler turns
+  /// each dynamically indexed read into a chain of 64 selects: minutes on llvmpipe.
+  static constexpr int kMaxCellsPerAxis = 2;
+  /// build() splits the box while more than this fraction of its sample points
+  /// cannot be resolved in fp32 (|G| <= Γ_A·Ĝ in the cell's frame).
+  static constexpr double kUnresolvedTarget = 0.01;
 
   /// Frames `f` (three variables x, y, z in ring order) in `box` and compiles G, its
   /// majorant Ĝ (with gradient) and Ĝ (value only). Throws InputError
@@ -85,8 +95,16 @@ class SafeSdf {
   /// exceeds kMajorantLimit already at |u_i| = kFarField: the terms of G cannot all
   /// be evaluated in fp32 at the box's margin), LimitExceeded from `budget`;
   /// std::invalid_argument for `shape` automatic (the caller decides it: enclosure.hpp).
+  ///
+  /// Cells (docs/sdf.md §6, "Cells"): where fp32 cannot resolve |G| at more than
+  /// kUnresolvedTarget of a grid of sample points of the box (Horner's error bound
+  /// Γ_A·Ĝ above |G|: the power basis cancels, as for degree 18), the box is split
+  /// into k³ cells, k = 2, 4, … up to `max_cells_per_axis`, and G re-expanded exactly
+  /// around each cell's centre, in the cell's own frame t = (p - c_cell)·k·s; the
+  /// cell containing p is evaluated. Each expansion is the same polynomial F, so the
+  /// theorem holds per cell with t for u. 1 turns cells off.
   static SafeSdf build(const Polynomial& f, const SceneBox& box, const Budget& budget = Budget(),
-                       SdfShape shape = SdfShape::solid);
+                       SdfShape shape = SdfShape::solid, int max_cells_per_axis = kMaxCellsPerAxis);
 
   /// The bound at p = (x, y, z), computed exactly as the GLSL does (float) or in
   /// double with double constants and ε = 2^-52. Guarantee (docs/sdf.md §6), under
@@ -116,32 +134,39 @@ class SafeSdf {
   const PolynomialProgram& program() const { return program_; }
   /// The compiled majorant Ĝ (value and gradient).
   const PolynomialProgram& majorant() const { return majorant_; }
-  /// The largest radius tried (kRadiusCap, or less for high degrees), in u units.
-  double radius_cap() const { return constants_double_.radius_cap; }
+  /// The largest radius tried (kRadiusCap, or less for high degrees), in u units (a
+  /// cell's frame has k times larger units; Constants::radius_cap is in those).
+  double radius_cap() const { return constants_double_.radius_cap / cells_per_axis_; }
+  /// k: the box is split into k³ cells, each with its own expansion of G (1: none).
+  int cells_per_axis() const { return cells_per_axis_; }
 
   /// The constants of one precision, each rounded in the safe direction (names as
   /// in docs/sdf.md §6).
   template <typename T>
   struct Constants {
-    std::array<T, 3> centre{};  ///< c (exact)
-    T scale = 1;                ///< s (exact)
-    T half_extent = 1;          ///< h = 1/s, rounded down
-    T box_half = 1;             ///< b: the box is inside |u_i| <= b; rounded up
-    T box_clamp = 1;            ///< L: box distances per axis are clamped to it (no overflow)
-    T u_shrink = 1;             ///< 1 - 4ε: |u_true,i| >= |u_i|·u_shrink after rounding
-    T u_grow = 1;               ///< 1 + 4ε: |u_true,i| <= |u_i|·u_grow after rounding
-    T box_half_inner = 1;       ///< b rounded down: the distance to the faces from inside
-    T u_error = 0;              ///< 3ε: |u - u_true| <= u_error·(|u|+|v|+|w|)
-    T gamma_value = 0;          ///< Γ_A: |G(u) - g| <= Γ_A·Ĝ(a), with slack
-    T gamma_gradient = 0;       ///< Γ_B: |∇G(u) - ∇g| <= Γ_B·ΣĜ_i(a), with slack
-    T norm_up = 1;              ///< 1 + 16ε: covers the rounding of |∇g|
-    T tau = 0;                  ///< absolute slack: dropped terms, flushed subnormals
-    T minimum_value = 0;        ///< kMinimumValue
-    T radius_cap = 1;           ///< r_cap
-    T majorant_up = 1;          ///< 1 + Γ_X: Ĝ(a + r) <= X·majorant_up
-    T majorant_down = 1;        ///< 1 - Γ_Y: Ĝ(a) + r·ΣĜ_i(a) >= Y·majorant_down
-    T root_shrink = 1;          ///< 1 - 32ε: covers the rounding of a root formula
-    T out_shrink = 1;           ///< 1 - 16ε: covers the last operations
+    std::array<T, 3> centre{};                   ///< c (exact)
+    T scale = 1;                                 ///< s (exact)
+    T half_extent = 1;                           ///< h = 1/s, rounded down
+    T box_half = 1;                              ///< b: the box is inside |u_i| <= b; rounded up
+    T box_clamp = 1;                             ///< L: box distances per axis are clamped to it (no overflow)
+    T u_shrink = 1;                              ///< 1 - 4ε: |u_true,i| >= |u_i|·u_shrink after rounding
+    T u_grow = 1;                                ///< 1 + 4ε: |u_true,i| <= |u_i|·u_grow after rounding
+    T box_half_inner = 1;                        ///< b rounded down: the distance to the faces from inside
+    T u_error = 0;                               ///< 3ε: |u - u_true| <= u_error·(|u|+|v|+|w|)
+    T gamma_value = 0;                           ///< Γ_A: |G(u) - g| <= Γ_A·Ĝ(a), with slack
+    T gamma_gradient = 0;                        ///< Γ_B: |∇G(u) - ∇g| <= Γ_B·ΣĜ_i(a), with slack
+    T norm_up = 1;                               ///< 1 + 16ε: covers the rounding of |∇g|
+    T tau = 0;                                   ///< absolute slack: dropped terms, flushed subnormals
+    T minimum_value = 0;                         ///< kMinimumValue
+    T radius_cap = 1;                            ///< r_cap
+    T majorant_up = 1;                           ///< 1 + Γ_X: Ĝ(a + r) <= X·majorant_up
+    T majorant_down = 1;                         ///< 1 - Γ_Y: Ĝ(a) + r·ΣĜ_i(a) >= Y·majorant_down
+    T root_shrink = 1;                           ///< 1 - 32ε: covers the rounding of a root formula
+    T out_shrink = 1;                            ///< 1 - 16ε: covers the last operations
+    T cell_scale = 1;                            ///< k·s: the cells' frames t = (p - c_cell)·k·s (exact)
+    T cell_step = 1;                             ///< 1/k: a radius in t units times this is in u units (exact)
+    T cell_index_scale = 0.5f;                   ///< k/2: a cell's index is floor((u + 1)·k/2), clamped
+    std::vector<std::array<T, 3>> cell_centres;  ///< c_cell (floats), cell = (i·k + j)·k + l
   };
 
  private:
@@ -154,11 +179,34 @@ class SafeSdf {
     }
   }
 
+  // The cell holding p (u its frame coordinates; floor((u_i + 1)·k/2), clamped), and p
+  // in that cell's frame, rounded as the GLSL rounds it.
+  template <typename T>
+  std::size_t find_cell(T x, T y, T z, std::array<T, 3> u, T& lu, T& lv, T& lw) const {
+    const Constants<T>& k = constants<T>();
+    std::size_t cell = 0;
+    for (const T coordinate : u) {
+      const int i = static_cast<int>(std::floor((coordinate + T(1)) * k.cell_index_scale));
+      cell = cell * static_cast<std::size_t>(cells_per_axis_) +
+             static_cast<std::size_t>(std::clamp(i, 0, cells_per_axis_ - 1));
+    }
+    lu = (x - k.cell_centres[cell][0]) * k.cell_scale;
+    lv = (y - k.cell_centres[cell][1]) * k.cell_scale;
+    lw = (z - k.cell_centres[cell][2]) * k.cell_scale;
+    return cell;
+  }
+
+  // GLSL with cells: the array of the cells' centres, and the statements that find p's
+  // cell and its coordinates there.
+  std::string cell_centres_glsl(const std::string& name) const;
+  std::string cell_frame_glsl(const std::string& centres) const;
+
   SceneFrame frame_;
   SdfShape shape_ = SdfShape::solid;
   PolynomialProgram program_;         // G with gradient
   PolynomialProgram majorant_;        // Ĝ with gradient
   PolynomialProgram majorant_value_;  // Ĝ, value only
+  int cells_per_axis_ = 1;
   Constants<float> constants_float_;
   Constants<double> constants_double_;
 };
@@ -178,8 +226,13 @@ T SafeSdf::evaluate_with_chord_steps(T x, T y, T z, int chord_steps) const {
   const T box = std::sqrt(du * du + dv * dv + dw * dw);
   if (std::max(abs_u, std::max(abs_v, abs_w)) > T(kFarField)) return box * k.half_extent * k.out_shrink;
 
-  const ValueAndGradient<T> g = program_.evaluate(u, v, w);
-  const ValueAndGradient<T> m = majorant_.evaluate(abs_u, abs_v, abs_w);
+  // The cell holding p and p in its frame (the box's own frame when there is one cell).
+  std::size_t cell = 0;
+  T lu = u, lv = v, lw = w;
+  if (cells_per_axis_ > 1) cell = find_cell(x, y, z, {u, v, w}, lu, lv, lw);
+  const T abs_lu = std::abs(lu), abs_lv = std::abs(lv), abs_lw = std::abs(lw);
+  const ValueAndGradient<T> g = program_.evaluate_in_cell(cell, lu, lv, lw);
+  const ValueAndGradient<T> m = majorant_.evaluate_in_cell(cell, abs_lu, abs_lv, abs_lw);
   const T m_sum = m.gradient[0] + m.gradient[1] + m.gradient[2];
   // A <= |G(u)|, B >= |∇G(u)|.
   const T lower = (std::abs(g.value) - k.gamma_value * m.value) - k.tau;
@@ -194,7 +247,7 @@ T SafeSdf::evaluate_with_chord_steps(T x, T y, T z, int chord_steps) const {
   T r = k.radius_cap * lower / std::max(slope * k.radius_cap, lower);
   T safe = zero, right = zero, phi_right = zero;
   for (int step = 0; step <= chord_steps; ++step) {
-    const T big = majorant_value_.evaluate(abs_u + r, abs_v + r, abs_w + r).value;
+    const T big = majorant_value_.evaluate_in_cell(cell, abs_lu + r, abs_lv + r, abs_lw + r).value;
     const T remainder = big * k.majorant_up - (m.value + r * m_sum) * k.majorant_down;
     const T phi = (lower - slope * r) - remainder;
     if (step == 0) {
@@ -215,7 +268,8 @@ T SafeSdf::evaluate_with_chord_steps(T x, T y, T z, int chord_steps) const {
     }
     r = safe;
   }
-  const T radius = safe - (abs_u + abs_v + abs_w) * k.u_error;
+  // In t units, then u units (× 1/k, exact).
+  const T radius = (safe - (abs_lu + abs_lv + abs_lw) * k.u_error) * k.cell_step;
   if (!(radius > zero)) return box * k.half_extent * k.out_shrink;
   // F > 0, or a sheet: both terms bound the distance to Z ∩ box from below.
   if (g.value >= zero || shape_ == SdfShape::sheet) return std::max(box, radius) * k.half_extent * k.out_shrink;
