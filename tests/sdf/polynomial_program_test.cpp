@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <random>
@@ -86,6 +87,49 @@ TEST(PolynomialProgram, ValueOnlyProgramRoundsLikeTheFullOne) {
     EXPECT_EQ(glsl.find("gu"), std::string::npos);
     EXPECT_EQ(glsl.find("aw"), std::string::npos);
   }
+}
+
+}  // namespace
+}  // namespace implicitizer
+
+namespace implicitizer {
+namespace {
+
+// Cells (safe_sdf.hpp): one program over the union of the supports, one row of the
+// table per polynomial. Each row evaluates to that polynomial's own program's values
+// (a coefficient a cell lacks is 0: a·x + 0 is a·x, exactly), in float and double;
+// the GLSL reads coefficient i as TABLEi[cell], abs() of it for a majorant, and the
+// table holds one const array of cells() entries per coefficient.
+TEST(PolynomialProgram, CellsShareOneProgramAndEvaluateAsTheirOwn) {
+  const std::vector<Polynomial> cells = {parse_xyz("x^3*z-y^2/4+1/8"), parse_xyz("y^4*z^4-x^4/5"),
+                                         parse_xyz("-x+1/3*z^2")};
+  const PolynomialProgram shared = PolynomialProgram::compile_cells(cells);
+  EXPECT_EQ(shared.cells(), 3u);
+  EXPECT_EQ(shared.coefficients_per_cell(), 7u);  // x^3z, y^2, 1, y^4z^4, x^4, x, z^2
+  EXPECT_EQ(shared.table_float().size(), 21u);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> coordinate(-1.5, 1.5);
+  for (std::size_t cell = 0; cell < cells.size(); ++cell) {
+    const PolynomialProgram own = PolynomialProgram::compile(cells[cell]);
+    for (int i = 0; i < 50; ++i) {
+      const float u = static_cast<float>(coordinate(random)), v = static_cast<float>(coordinate(random)),
+                  w = static_cast<float>(coordinate(random));
+      const ValueAndGradient<float> a = shared.evaluate_in_cell(cell, u, v, w), b = own.evaluate(u, v, w);
+      EXPECT_EQ(a.value, b.value) << cell;
+      for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(a.gradient[k], b.gradient[k]) << cell;
+      EXPECT_EQ(shared.evaluate_in_cell<double>(cell, u, v, w).value, own.evaluate<double>(u, v, w).value);
+    }
+  }
+  const std::string glsl = shared.to_glsl("  ", "T");
+  EXPECT_NE(glsl.find("T0[cell]"), std::string::npos) << glsl;
+  EXPECT_EQ(glsl.find("1.25000000e-01"), std::string::npos) << "1/8 is read from the table: " << glsl;
+  EXPECT_NE(shared.to_glsl("  ", "T", true).find("abs(T0[cell])"), std::string::npos);
+  const std::string table = shared.glsl_table("T");
+  EXPECT_NE(table.find("const float T6[3] = float[3]("), std::string::npos) << table;
+  EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 7);
+  // One polynomial: compile() itself, literals in the GLSL as before.
+  EXPECT_EQ(PolynomialProgram::compile_cells({cells[0]}).to_glsl("  "),
+            PolynomialProgram::compile(cells[0]).to_glsl("  "));
 }
 
 }  // namespace

@@ -721,6 +721,15 @@ namespace {
 // without cells; 0 (fp32 cannot tell |G| from 0: docs/sdf.md §6) at fewer points the
 // more cells: measured 932 without (the power basis in the box's frame), 383 with the
 // default 2³ cells, 13 with 4³ (printed; the bounds asserted are 5 % and 0.5 %).
+// Low degree: the sample resolves everywhere, one cell, the GLSL has no tables.
+TEST(SafeSdf, LowDegreeSurfacesKeepOneCell) {
+  for (const char* f : {"x^2+y^2+z^2-1", "(x^2+y^2+z^2+3)^2-16*(x^2+y^2)", "x^2*y^2+y^2*z^2+z^2*x^2-x*y*z"}) {
+    const SafeSdf sdf = SafeSdf::build(parse_xyz(f), SceneBox::default_box());
+    EXPECT_EQ(sdf.cells_per_axis(), 1) << f;
+    EXPECT_EQ(sdf.to_glsl("s_sdf").find("[cell]"), std::string::npos) << f;
+  }
+}
+
 TEST(SafeSdf, Tp33NeverAWrongSignAndFewerZerosWithCells) {
   const testing::SignSample& sample = testing::tp33_sign_sample();
   for (const int max_cells : {1, SafeSdf::kMaxCellsPerAxis, 4}) {
