@@ -44,8 +44,8 @@ void report_no_single_equation(const ErrorReport& report, const NoSingleEquation
 
 void report_tolerance_not_met(const ErrorReport& report, const ToleranceNotMet& e) {
   if (report.json) std::cout << encode_error(e) << '\n';
-  std::cerr << "error: tolerance_not_met: " << e.what() << " (best bound reached: " << e.best()
-            << " of the diagonal)\n";
+  // The message states the best bound reached (ToleranceNotMet::best(), in the JSON).
+  std::cerr << "error: tolerance_not_met: " << e.what() << '\n';
 }
 
 void report_limit(const ErrorReport& report, const LimitExceeded& e) {

@@ -482,6 +482,9 @@ for bad in 0 -0.001 0.6 nan inf small; do
 done
 expect_json "sdf --tolerance json error" 3 'j["error"]["code"] == "invalid_tolerance" and j["error"]["field"] == "tolerance"' \
   sdf --implicit "x^2+y^2+z^2-1" --tolerance 0.01 --json
+# A tolerance below double's rounding cannot be met: exit 4, the best bound in the JSON.
+expect_json "sdf --tolerance not met" 4 'j["error"]["code"] == "tolerance_not_met" and 0 < j["error"]["best_bound"] < 1e-6' \
+  sdf --x s --y t --z "s*t^2" --domain 0,1,0,1 --tolerance 1e-300 --json
 # A closed surface over the whole plane keeps its exact equation, and says so.
 expect_json "sdf --tolerance on the sphere keeps the exact equation" 0 \
   'j["approximation"]["exact"] and j["degree"] == 2 and j["approximation"]["pieces"] == 1' \

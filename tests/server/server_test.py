@@ -189,6 +189,11 @@ def test_tolerance(s):
             status, _, body = s.post_json(path, request)
             check(status == 400 and error_code(body) == "invalid_tolerance" and body["error"].get("field") == field,
                   "%s %r: %s %r" % (path, request, status, body))
+    # Below double's rounding: 422 with the best bound reached, never a worse answer.
+    status, _, body = s.post_json("/v1/sdf", {"x": "s", "y": "t", "z": "s*t^2", "domain": [0, 1, 0, 1],
+                                              "tolerance": 1e-300})
+    check(status == 422 and error_code(body) == "tolerance_not_met" and 0 < body["error"].get("best_bound", 0) < 1e-6,
+          "sdf tolerance not met: %s %r" % (status, body))
     status, headers, data = s.request("POST", "/v1/render", dict(patch, tolerance=0.01, width=24, height=24, aa=1),
                                       {"Content-Type": "application/json"})
     check(status == 200 and headers.get("x-render-tolerance") == "0.01" and int(headers.get("x-render-pieces", 0)) >= 1
