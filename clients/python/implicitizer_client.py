@@ -241,7 +241,7 @@ class Client:
         `name` the prefix of the function (default "surface"); `tolerance` EPS in
         (0, 0.5] approximates a parametric patch within EPS × its box's diagonal, both
         ways (default: the exact equation; a bound the server cannot reach raises
-        `tolerance_not_met`, 422, with `best_bound`). Returns `glsl`
+        `tolerance_not_met`, 422, its `error["best_bound"]` the bound reached). Returns `glsl`
         (defining `float NAME_sdf(vec3 p)`, `vec2 p` for a curve), `function`, `mode`,
         `shape` (the one picked), `dimension`, `box` (the box used), `degree`,
         `uniforms` (for a scene also `nodes` and `leaves`), and with a tolerance
