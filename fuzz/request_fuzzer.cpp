@@ -27,6 +27,7 @@
 #include <string_view>
 
 #include "config.hpp"
+#include "implicitizer/approximation/patch_approximation.hpp"
 #include "implicitizer/codec/groebner_json.hpp"
 #include "implicitizer/codec/implicitize_json.hpp"
 #include "implicitizer/codec/render_json.hpp"
@@ -74,6 +75,7 @@ void answer_within_budget(const char* endpoint, std::size_t size, const Answer& 
     (void)answer(answer_budget());
   } catch (const InputError&) {
   } catch (const NoSingleEquation&) {
+  } catch (const ToleranceNotMet&) {  // an approximation that cannot reach its tolerance
   } catch (const LimitExceeded&) {
   }
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -42,6 +42,12 @@ void report_no_single_equation(const ErrorReport& report, const NoSingleEquation
   }
 }
 
+void report_tolerance_not_met(const ErrorReport& report, const ToleranceNotMet& e) {
+  if (report.json) std::cout << encode_error(e) << '\n';
+  // The message states the best bound reached (ToleranceNotMet::best(), in the JSON).
+  std::cerr << "error: tolerance_not_met: " << e.what() << '\n';
+}
+
 void report_limit(const ErrorReport& report, const LimitExceeded& e) {
   if (report.json) std::cout << encode_error(e) << '\n';
   std::cerr << "error: " << limit_error_code(e.limit()) << " (" << to_string(e.limit()) << " limit): " << e.what()
@@ -63,6 +69,9 @@ int run_reporting_errors(const ErrorReport& report, const std::function<void()>&
   } catch (const NoSingleEquation& e) {
     report_no_single_equation(report, e);
     return kExitNoSingleEquation;
+  } catch (const ToleranceNotMet& e) {
+    report_tolerance_not_met(report, e);
+    return kExitToleranceNotMet;
   } catch (const LimitExceeded& e) {
     report_limit(report, e);
     return kExitLimit;

@@ -17,6 +17,9 @@ enum ExitStatus : int {
   kExitUsage = 2,          ///< the program was called wrongly
   kExitInvalidInput = 3,   ///< InputError
   kExitNoSingleEquation = 4,
+  /// ToleranceNotMet shares 4: like no single equation, a well-formed input the
+  /// computation cannot answer as asked (both are HTTP 422).
+  kExitToleranceNotMet = 4,
   kExitLimit = 5,  ///< LimitExceeded: time, size or cancelled
 };
 

@@ -22,9 +22,9 @@ commands:
   implicitizer resultant --var t [--timeout SECONDS] [--max-terms N] [--max-memory SIZE] [--json] F G
   implicitizer sdf (--implicit E | --x E --y E [--z E] [--params s,t] | --scene FILE.json)
                [--shape auto|sheet|solid] [--domain s0,s1[,t0,t1]] [--mode fast|safe]
-               [--box x0,y0,z0,x1,y1,z1] [--name NAME] [--eval FILE] [--json]
+               [--box x0,y0,z0,x1,y1,z1] [--name NAME] [--tolerance EPS] [--eval FILE] [--json]
   implicitizer render (--implicit E | --x E --y E [--z E] [--params s,t] | --scene FILE.json)
-               [--shape ...] [--domain ...]
+               [--shape ...] [--domain ...] [--tolerance EPS]
                [--method sphere|enhanced|newton|forward_newton|exact] [--mode fast|safe] [--size WxH]
                [--aa N] [--eye x,y,z] [--target x,y,z] [--box ...] [--timeout S] -o FILE.png [--json]
   implicitize and groebner also take --strategy auto|normal|sugar,
@@ -160,6 +160,10 @@ options:
   --domain s0,s1[,t0,t1]
                         the parameter domain of --x --y [--z], exact numbers with
                         lo < hi (default: docs/sdf.md, "Patches")
+  --tolerance EPS       approximate the patch of --x --y --z (a bounded domain) by
+                        low-degree pieces within EPS x its box's diagonal, both
+                        ways, 0 < EPS <= 0.5 (--json reports degree, pieces, GLSL
+                        lines and the bounds reached); default: the exact equation
   --mode fast|safe      fast: F/|grad F|, first order, not a bound (default); safe: a
                         proven lower bound of the distance (sphere tracing never
                         crosses the surface; slower, 0 within fp32's resolution)
@@ -184,9 +188,10 @@ invalid_box, invalid_domain, invalid_name, invalid_point: a malformed line of
 fp32's range; for scenes invalid_json, invalid_scene, unknown_node_type,
 missing_parameter, invalid_value, name_collision, unsafe_operator,
 repetition_overlap, unbounded_child, scene_too_large, unbounded_patch,
-no_single_equation: a parametric leaf whose image is not a surface), 4 no single
-equation (a parametrization whose image is not a surface or curve), 5 time or size
-limit.
+no_single_equation: a parametric leaf whose image is not a surface;
+invalid_tolerance: --tolerance not in (0, 0.5], or not a parametric surface), 4 no
+single equation (a parametrization whose image is not a surface or curve), or
+tolerance_not_met (the best bound reached is printed), 5 time or size limit.
 )";
 
 const char* const kRenderHelp =
@@ -202,7 +207,7 @@ options:
   --x E --y E [--z E]   a parametric surface or (no --z) curve instead (--params s,t:
                         their order)
   --scene FILE.json     a scene instead (docs/sdf.md, "Scenes")
-  --shape auto|sheet|solid, --domain s0,s1[,t0,t1]
+  --shape auto|sheet|solid, --domain s0,s1[,t0,t1], --tolerance EPS
                         as for sdf
   -o, --output FILE     the PNG to write (required)
   --method M            sphere (default): sphere tracing; enhanced: over-relaxed
@@ -234,8 +239,9 @@ limits: width and height 1 to 4096, width x height x aa^2 at most 4194304 rays.
 exit status: 0 success, 2 usage error (also: a scene file that cannot be read, an
 output file that cannot be written), 3 invalid input (the errors of sdf, and
 invalid_size, render_too_large, invalid_camera, method_not_applicable: exact on a
-scene that is not one polynomial leaf), 4 no single equation (a parametrization
-whose image is not a surface or curve), 5 time limit.
+scene that is not one polynomial leaf, or an approximation), 4 no single equation
+(a parametrization whose image is not a surface or curve) or tolerance_not_met, 5
+time limit.
 )";
 
 }  // namespace implicitizer::cli

@@ -1,16 +1,30 @@
 #include "scene_flags.hpp"
 
 #include <array>
+#include <cstdlib>
+#include <limits>
 
 #include "choice_flag.hpp"
 #include "implicitizer/sdf/sdf_shape.hpp"
 
 namespace implicitizer::cli {
+namespace {
+
+// The number --tolerance gives; a text that is not one whole number reads as NaN, which
+// the leaf refuses as `invalid_tolerance` (status 3, as a bad JSON tolerance is).
+double parse_tolerance(const std::string& text) {
+  char* end = nullptr;
+  const double eps = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size()) return std::numeric_limits<double>::quiet_NaN();
+  return eps;
+}
+
+}  // namespace
 
 std::vector<OptionSpec> with_scene_options(std::initializer_list<OptionSpec> own) {
   std::vector<OptionSpec> options = {{"implicit", true}, {"x", true},     {"y", true},     {"z", true},
                                      {"params", true},   {"scene", true}, {"shape", true}, {"domain", true},
-                                     {"mode", true},     {"box", true},   {"name", true}};
+                                     {"mode", true},     {"box", true},   {"name", true},  {"tolerance", true}};
   options.insert(options.end(), own);
   return options;
 }
@@ -44,6 +58,7 @@ std::optional<std::string> read_scene_flags(const Arguments& arguments, bool jso
   if (const auto domain = arguments.value("domain")) request.domain = split_list(*domain, "domain");
   if (const auto box = arguments.value("box")) request.box = split_list(*box, "box");
   if (const auto name = arguments.value("name")) request.name = *name;
+  if (const auto tolerance = arguments.value("tolerance")) request.tolerance = parse_tolerance(*tolerance);
   return scene_text;
 }
 

@@ -2,7 +2,7 @@
 /// \file
 /// The flags `sdf` and `render` share: the object (`--implicit E`, `--x E --y E
 /// [--z E] [--params s,t]`, or `--scene FILE.json`), `--shape`, `--domain`, `--mode`,
-/// `--box` and `--name`, read into a SceneRequest (scene_request.hpp), the same
+/// `--box`, `--name` and `--tolerance`, read into a SceneRequest (scene_request.hpp), the same
 /// fields POST /v1/sdf and /v1/render read from JSON.
 
 #include <initializer_list>
@@ -24,7 +24,7 @@ std::vector<OptionSpec> with_scene_options(std::initializer_list<OptionSpec> own
 /// (status 2) for no object or more than one, `--z` without `--x --y`, `--params`
 /// without them, an unreadable scene file, and a `--mode` or `--shape` outside its
 /// list (with `json`, that error's JSON is printed too, as read_choice() does).
-/// Values (`--domain`, `--box`) are the service's to check (status 3).
+/// Values (`--domain`, `--box`, `--tolerance`) are the service's to check (status 3).
 std::optional<std::string> read_scene_flags(const Arguments& arguments, bool json, SceneRequest& request);
 
 /// The texts behind the request's fields ("implicit", "x", …, "scene"), for the caret

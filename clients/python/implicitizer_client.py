@@ -228,7 +228,7 @@ class Client:
             polynomials=[f, g], variable=variable, timeout_ms=timeout_ms))
 
     def sdf(self, implicit=None, scene=None, x=None, y=None, z=None, parameters=None, shape=None, domain=None,
-            mode=None, box=None, name=None, timeout_ms=None):
+            mode=None, box=None, name=None, timeout_ms=None, tolerance=None):
         """POST /v1/sdf: the GLSL distance function of `implicit` (a polynomial in x,
         y, z; without z a plane curve), of the parametric `x`, `y`, `z` (with
         `parameters`; without `z` a plane curve) or of `scene` (a dict: the scene tree
@@ -238,23 +238,28 @@ class Client:
         [s0, s1, t0, t1] ([s0, s1] for a curve; numbers or exact strings like "1/3");
         `mode` is "fast" (default) or "safe" (a proven lower bound); `box` six numbers
         x0, y0, z0, x1, y1, z1 (four for a curve; default [-2, 2]³, fitted to a patch);
-        `name` the prefix of the function (default "surface"). Returns `glsl`
+        `name` the prefix of the function (default "surface"); `tolerance` EPS in
+        (0, 0.5] approximates a parametric patch within EPS × its box's diagonal, both
+        ways (default: the exact equation; a bound the server cannot reach raises
+        `tolerance_not_met`, 422, its `error["best_bound"]` the bound reached). Returns `glsl`
         (defining `float NAME_sdf(vec3 p)`, `vec2 p` for a curve), `function`, `mode`,
         `shape` (the one picked), `dimension`, `box` (the box used), `degree`,
-        `uniforms` (for a scene also `nodes` and `leaves`).
+        `uniforms` (for a scene also `nodes` and `leaves`), and with a tolerance
+        `approximation` (`degree`, `pieces`, `glsl_lines`, `patch_to_surface` and
+        `surface_to_patch` with their `bound` and `method`).
         """
         return self._post_json("/v1/sdf", _without_none(
             implicit=implicit, scene=scene, x=x, y=y, z=z, parameters=parameters, shape=shape, domain=domain,
-            mode=mode, box=box, name=name, timeout_ms=timeout_ms))
+            tolerance=tolerance, mode=mode, box=box, name=name, timeout_ms=timeout_ms))
 
     def render(self, implicit=None, scene=None, x=None, y=None, z=None, parameters=None, shape=None, domain=None,
                mode=None, box=None, name=None, width=None, height=None, method=None, aa=None, eye=None, target=None, precision=None,
-               format=None, timeout_ms=None):  # pylint: disable=redefined-builtin
+               format=None, timeout_ms=None, tolerance=None):  # pylint: disable=redefined-builtin
         """POST /v1/render: a PNG preview. Returns RenderResult(png, stats).
 
         The object is given as for `sdf` (`implicit`, `scene`, or the parametric `x`,
-        `y`, `z` with `parameters`; give one), with `shape`, `domain`, `mode`, `box`,
-        `name`; a plane curve is drawn in the plane. `width`,
+        `y`, `z` with `parameters`; give one), with `shape`, `domain`, `tolerance`,
+        `mode`, `box`, `name`; a plane curve is drawn in the plane. `width`,
         `height` in pixels (1 to 4096, default 256), `method` "sphere" (default),
         "enhanced", "newton", "forward_newton" or "exact", `aa` AA×AA samples per
         pixel (1 to 8, default 2), `eye` and `target` three numbers each,
@@ -266,7 +271,7 @@ class Client:
         """
         request = _without_none(
             implicit=implicit, scene=scene, x=x, y=y, z=z, parameters=parameters, shape=shape, domain=domain,
-            mode=mode, box=box, name=name, width=width, height=height, method=method, aa=aa, eye=eye, target=target, precision=precision,
+            tolerance=tolerance, mode=mode, box=box, name=name, width=width, height=height, method=method, aa=aa, eye=eye, target=target, precision=precision,
             format=format, timeout_ms=timeout_ms)
         status, headers, body = self._exchange("POST", "/v1/render", request)
         if format == "json":
@@ -439,15 +444,17 @@ _COMMAND_HELP = """commands:
   groebner [--vars x,y] [--order lex|grlex|grevlex] [--weights 1,2] [--eliminate s] [--json] F...
   resultant --var t [--json] F G
   sdf (--implicit E | --x E --y E [--z E] | --scene FILE.json) [--shape auto|sheet|solid]
-      [--domain s0,s1[,t0,t1]] [--mode fast|safe] [--box ...] [--name NAME] [--json]
+      [--domain s0,s1[,t0,t1]] [--tolerance EPS] [--mode fast|safe] [--box ...] [--name NAME] [--json]
   render (--implicit E | --x E --y E [--z E] | --scene FILE.json) -o FILE.png [--shape S] [--domain D]
+         [--tolerance EPS]
          [--method M] [--size WxH]
          [--aa N] [--eye x,y,z] [--target x,y,z] [--precision float|double] [--json]
   health, metrics, help [COMMAND]
 
 The server is --url URL, else $IMPLICITIZER_URL, else %s.
 Exit status: 0 ok, 1 internal error or no answer, 2 usage, 3 invalid input,
-4 no single implicit equation, 5 time or size limit (clients/python/README.md).
+4 no single implicit equation or tolerance not met, 5 time or size limit
+(clients/python/README.md).
 """ % DEFAULT_URL
 
 
@@ -461,6 +468,7 @@ def _object_options(p):
     _option(p, "scene", "FILE.json", help="a scene (docs/sdf.md, \"Scenes\")")
     _option(p, "shape", "S", ("auto", "sheet", "solid"), help="default auto")
     _option(p, "domain", "s0,s1[,t0,t1]", help="the parameter domain (exact numbers)")
+    _option(p, "tolerance", "EPS", help="approximate the patch within EPS x its box's diagonal (0 < EPS <= 0.5)")
     _option(p, "mode", "M", ("fast", "safe"), help="default fast")
 
 
@@ -658,6 +666,18 @@ def _run_resultant(client, args, field_texts):
         print(answer["resultant"])
 
 
+def _tolerance(args):
+    """--tolerance as a JSON number; a text that is not a finite number is sent as is,
+    so that the server refuses it as the C++ CLI does (invalid_tolerance, status 3)."""
+    if args.tolerance is None:
+        return None
+    try:
+        value = float(args.tolerance)
+    except ValueError:
+        return args.tolerance
+    return value if math.isfinite(value) else args.tolerance
+
+
 def _object_of(args, field_texts):
     """The request fields naming the object (implicit, scene, or x, y[, z]) and its
     shape and domain, as the C++ CLI reads them (clients/cli/scene_flags.cpp)."""
@@ -667,7 +687,7 @@ def _object_of(args, field_texts):
         raise _UsageError("give exactly one of --implicit E, --x E --y E [--z E], or --scene FILE.json")
     if args.params is not None and not parametric:
         raise _UsageError("--params goes with --x --y [--z]")
-    fields = {"shape": args.shape, "domain": _list_option(args, "domain")}
+    fields = {"shape": args.shape, "domain": _list_option(args, "domain"), "tolerance": _tolerance(args)}
     if args.scene is not None:
         text, scene = _read_scene(args.scene)
         field_texts["scene"] = text
@@ -748,7 +768,7 @@ def exit_status(error):
     """The command line's exit status for an ImplicitizerError (also for scripts that
     use the library and want the CLI's statuses), as build/bin/implicitizer
     would end on the same refusal: 3 invalid input (400, and render_too_large),
-    4 no single equation or base points (422), 5 a time, size or cancellation limit
+    4 no single equation, base points or tolerance_not_met (422), 5 a time, size or cancellation limit
     (504, 413, 431, 503 cancelled, client_timeout), 2 unknown_method (the C++ CLI's
     usage error), 1 anything else (500, 503 overloaded, 404, connection_failed,
     bad_response)."""

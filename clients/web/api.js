@@ -124,9 +124,10 @@ export function implicitize({ x, y, z, method, timeoutMs }, options) {
 /// ({x, y, z?, domain?}: z empty for a plane curve; domain a list of exact numbers
 /// s0, s1[, t0, t1] as typed, empty for the default) or a scene ({scene}), with the
 /// shape (auto, sheet, solid; not for a scene, whose leaves carry theirs), mode, box
-/// (null: fitted to a patch, else the default) and name -> {glsl, function, shape,
-/// dimension, box (the box actually used), uniforms, ...}.
-export function sdf({ implicit, x, y, z, domain, scene, shape, mode, box, name, timeoutMs }, options) {
+/// (null: fitted to a patch, else the default) and name, and for a parametric surface
+/// a tolerance (null: the exact equation) -> {glsl, function, shape, dimension, box
+/// (the box actually used), uniforms, approximation (with a tolerance), ...}.
+export function sdf({ implicit, x, y, z, domain, tolerance, scene, shape, mode, box, name, timeoutMs }, options) {
   const body = { mode, name };
   if (scene !== undefined) {
     body.scene = scene;
@@ -137,6 +138,7 @@ export function sdf({ implicit, x, y, z, domain, scene, shape, mode, box, name, 
     body.y = y;
     if (z) body.z = z;
     if (domain && domain.length) body.domain = domain;
+    if (tolerance !== null && tolerance !== undefined) body.tolerance = tolerance;
   }
   if (shape) body.shape = shape;
   if (box) body.box = box;

@@ -10,13 +10,13 @@ import { defaultCamera, Preview, ShaderError } from './preview.js';
 
 const $ = (id) => document.getElementById(id);
 const INITIAL_EXAMPLE = 'torus_R2_r1';
-const FIELDS = ['x', 'y', 'z', 'domain', 'equation', 'box'];
+const FIELDS = ['x', 'y', 'z', 'domain', 'tolerance', 'equation', 'box'];
 
 const ui = {
   tabs: { parametric: $('tab-parametric'), implicit: $('tab-implicit') },
   forms: { parametric: $('form-parametric'), implicit: $('form-implicit') },
   examples: $('examples'),
-  inputs: { x: $('x'), y: $('y'), z: $('z'), domain: $('domain'), equation: $('equation'), box: $('box') },
+  inputs: { x: $('x'), y: $('y'), z: $('z'), domain: $('domain'), tolerance: $('tolerance'), equation: $('equation'), box: $('box') },
   shape: $('shape'),
   method: $('method'),
   timeout: $('timeout'),
@@ -42,6 +42,7 @@ const ui = {
   noWebgl: $('webgl-unavailable'),
   cpuImage: $('cpu-fallback'),
   stats: $('preview-stats'),
+  approximation: $('approximation'),
   aa: $('aa'),
   resetView: $('reset-view'),
   copyGlsl: $('copy-glsl'),
@@ -116,6 +117,18 @@ function exactValue(text) {
   if (!m) return NaN;
   const v = Number(m[1]) / (m[2] === undefined ? 1 : Number(m[2]));
   return Number.isFinite(v) ? v : NaN;
+}
+
+/// Parses the tolerance (a fraction of the patch box's diagonal); empty gives null (the
+/// exact equation). Its range (0, 0.5] is the server's to check (invalid_tolerance).
+function parseTolerance(text) {
+  const trimmed = text.trim();
+  if (!trimmed) return null;
+  const value = Number(trimmed);
+  if (!Number.isFinite(value)) {
+    throw new ApiError({ status: 0, code: 'invalid_tolerance', message: `'${trimmed}' is not a number`, position: text.indexOf(trimmed), field: 'tolerance' });
+  }
+  return value;
 }
 
 /// Parses the parameter domain "s0, s1, t0, t1" (a curve: "s0, s1"); empty gives null
@@ -392,13 +405,35 @@ async function drawOnServer(drawn, mode, signal) {
   ui.cpuImage.hidden = false;
 }
 
-// The object of a request: {implicit} or {x, y, z?, domain?} (the wire's field names).
+// The object of a request: {implicit} or {x, y, z?, domain?, tolerance?} (the wire's
+// field names).
 function requestObject(source) {
   if (source.implicit !== undefined) return { implicit: source.implicit };
   const object = { x: source.x, y: source.y };
   if (source.z) object.z = source.z;
   if (source.domain) object.domain = source.domain;
+  if (source.tolerance !== null && source.tolerance !== undefined) object.tolerance = source.tolerance;
   return object;
+}
+
+// Beside the preview: how an approximated patch was built and the bound it reached
+// (docs/api.md, "approximation"), or nothing without a tolerance. The line keeps its
+// height when empty (hiding it would resize the canvas, and redraw it).
+function showApproximation(a) {
+  if (!a) {
+    ui.approximation.textContent = '';
+    delete ui.approximation.dataset.bound;
+    return;
+  }
+  const bound = (b) => `${Number(b.bound.toPrecision(2))} (${b.method}${b.method === 'measured' ? ` on ${b.samples} points` : ''})`;
+  const size = `degree ${a.degree} × ${a.pieces} piece${a.pieces === 1 ? '' : 's'} · ${a.glsl_lines} GLSL lines`;
+  if (a.exact) {
+    ui.approximation.textContent = `Tolerance ${a.tolerance}: the exact equation is kept (${a.reason}) · ${size}`;
+  } else {
+    ui.approximation.textContent = `Tolerance ${a.tolerance} of the box diagonal: patch → surface ≤ ${bound(a.patch_to_surface)}, ` +
+      `surface → patch ≤ ${bound(a.surface_to_patch)} · ${size}`;
+  }
+  ui.approximation.dataset.bound = String(Math.max(a.patch_to_surface.bound, a.surface_to_patch.bound));
 }
 
 /// POST /v1/sdf for `source` ({implicit} or {x, y, z, domain}) in the current mode,
@@ -416,7 +451,10 @@ async function drawSurface(source, equation, box, name, busy) {
   const dimension = answer.dimension === 2 ? 2 : 3;
   const answerBox = Array.isArray(answer.box) ? answer.box : box;
   let side = null;
-  if (answer.shape === 'sheet' && dimension === 3) {
+  // An approximation is drawn one-sided: the side function would be the exact
+  // equation, evaluated at every step, the cost the tolerance is there to avoid.
+  const approximated = answer.approximation && !answer.approximation.exact;
+  if (answer.shape === 'sheet' && dimension === 3 && !approximated) {
     busy.setLabel('Building the sheet\'s side function…');
     // A scene of one implicit leaf rather than {implicit}: a scene is in space even
     // when F has no z (a cylinder over a curve), where {implicit} would be a plane curve.
@@ -426,6 +464,7 @@ async function drawSurface(source, equation, box, name, busy) {
     side = { glsl: signed.glsl, functionName: signed.function };
   }
   showGlsl(answer);
+  showApproximation(answer.approximation);
   hidePreviewError();
   ui.inputs.box.placeholder = `automatic (now ${answerBox.map((v) => Number(v.toPrecision(6))).join(', ')})`;
   const drawn = { source, equation, box, name, mode, shape, answerBox, dimension };
@@ -496,7 +535,7 @@ async function run(label, body) {
   }
 }
 
-const PARAMETRIC_FIELDS = { x: 'x', y: 'y', z: 'z', domain: 'domain', box: 'box' };
+const PARAMETRIC_FIELDS = { x: 'x', y: 'y', z: 'z', domain: 'domain', tolerance: 'tolerance', box: 'box' };
 
 function submitParametric() {
   // Sent as typed (the parser skips spaces), so that error positions index the input.
@@ -505,10 +544,12 @@ function submitParametric() {
   const z = ui.inputs.z.value.trim() ? ui.inputs.z.value : '';
   const name = surfaceName();
   return run('Implicitizing…', async (busy) => {
-    let box, domain;
+    let box, domain, tolerance = null;
     try {
       box = parseBox(ui.inputs.box.value);
       domain = parseDomain(ui.inputs.domain.value, z ? 2 : 1);
+      // Surfaces only: a plane curve is always exact.
+      if (z) tolerance = parseTolerance(ui.inputs.tolerance.value);
     } catch (e) {
       e.fieldMap = PARAMETRIC_FIELDS;
       throw e;
@@ -524,7 +565,7 @@ function submitParametric() {
     showParametricResult(result, performance.now() - started);
     try {
       // The patch itself (its domain, its shape), not the whole algebraic surface.
-      await drawSurface({ x, y, z, domain }, result.implicit, box, name, busy);
+      await drawSurface({ x, y, z, domain, tolerance }, result.implicit, box, name, busy);
     } catch (e) {
       // The equation is fine; its distance function or shader is not.
       if (e instanceof ApiError) e.fieldMap = PARAMETRIC_FIELDS;
@@ -630,6 +671,12 @@ function applyExample(name, { submit = true } = {}) {
 
 ui.examples.addEventListener('change', () => applyExample(ui.examples.value));
 // Editing an expression makes it a surface of one's own: the menu says so.
+ui.inputs.tolerance.addEventListener('input', () => {
+  if (ui.inputs.tolerance.getAttribute('aria-invalid')) {
+    ui.inputs.tolerance.removeAttribute('aria-invalid');
+    $('tolerance-error').hidden = true;
+  }
+});
 for (const name of ['x', 'y', 'z', 'domain', 'equation']) {
   ui.inputs[name].addEventListener('input', () => {
     ui.examples.value = '';

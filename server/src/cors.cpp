@@ -26,7 +26,9 @@ void CorsPolicy::apply(std::string_view origin, Response& response) const {
   response.set(http::field::access_control_expose_headers,
                "Retry-After, X-Cache, X-Render-Width, X-Render-Height, X-Render-Method, X-Render-Mode, "
                "X-Render-Precision, X-Render-Rays, X-Render-Hits, X-Render-Out-Of-Steps, "
-               "X-Render-Mean-Evaluations, X-Render-Max-Evaluations, X-Render-Elapsed-Ms");
+               "X-Render-Mean-Evaluations, X-Render-Max-Evaluations, X-Render-Elapsed-Ms, X-Render-Shape, "
+               "X-Render-Dimension, X-Render-Tolerance, X-Render-Approximation-Exact, X-Render-Degree, "
+               "X-Render-Pieces, X-Render-Glsl-Lines, X-Render-Patch-To-Surface, X-Render-Surface-To-Patch");
 }
 
 Response CorsPolicy::answer_preflight(std::string_view origin, std::string_view methods) const {

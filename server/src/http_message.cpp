@@ -29,6 +29,10 @@ Response make_exception_response(const std::exception_ptr& error) {
     return make_json_response(http::status::bad_request, encode_error(e));
   } catch (const NoSingleEquation& e) {
     return make_json_response(http::status::unprocessable_entity, encode_error(e));
+  } catch (const ToleranceNotMet& e) {
+    // Like no_single_equation: a well-formed request the computation cannot answer
+    // as asked (never a worse answer in its place).
+    return make_json_response(http::status::unprocessable_entity, encode_error(e));
   } catch (const LimitExceeded& e) {
     // A size or memory limit is the request being too large for this server, as a
     // body is; a cancelled computation only answers a client that has gone (or a

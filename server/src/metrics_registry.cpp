@@ -12,6 +12,8 @@ const char* to_string(ComputationOutcome outcome) {
       return "input_error";
     case ComputationOutcome::no_single_equation:
       return "no_single_equation";
+    case ComputationOutcome::tolerance_not_met:
+      return "tolerance_not_met";
     case ComputationOutcome::time_limit:
       return "time_limit";
     case ComputationOutcome::size_limit:

@@ -18,6 +18,7 @@ enum class ComputationOutcome {
   ok,
   input_error,
   no_single_equation,
+  tolerance_not_met,
   time_limit,
   size_limit,
   memory_limit,
@@ -79,7 +80,7 @@ class MetricsRegistry {
   std::uint64_t connections_closed_ = 0;
 };
 
-/// "ok", "input_error", "no_single_equation", "time_limit", "size_limit", "cancelled", "failed".
+/// "ok", "input_error", "no_single_equation", "tolerance_not_met", "time_limit", "size_limit", "cancelled", "failed".
 const char* to_string(ComputationOutcome outcome);
 
 }  // namespace implicitizer::server

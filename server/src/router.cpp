@@ -11,6 +11,7 @@
 #include "handlers/resultant.hpp"
 #include "handlers/sdf.hpp"
 #include "handlers/static_files.hpp"
+#include "implicitizer/approximation/patch_approximation.hpp"
 #include "implicitizer/core/budget.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/core/stopwatch.hpp"
@@ -39,6 +40,8 @@ ComputationOutcome classify(const std::exception_ptr& error) {
     return ComputationOutcome::input_error;
   } catch (const NoSingleEquation&) {
     return ComputationOutcome::no_single_equation;
+  } catch (const ToleranceNotMet&) {
+    return ComputationOutcome::tolerance_not_met;
   } catch (const LimitExceeded& e) {
     switch (e.limit()) {
       case Limit::time:

@@ -445,6 +445,52 @@ sys.exit(0 if len(v) == 2 and abs(v[0]) < 1e-6 and v[1] > 0.1 else 1)' "$WORK/ou
   fail "sdf --eval on a parametric curve: 0 on the arc, positive off it"
 fi
 expect_status "sdf curve domain count" 3 "invalid_domain in domain:" sdf --x t --y "t^2" --domain -1,1,0,1
+# --tolerance (issue 19): tp_22 of surfaces_hard.json approximated within 1e-2 of its
+# box's diagonal. Safe mode's values are lower bounds of the distance to the pieces,
+# so at points X(s, t) of the patch they are at most patch_to_surface x diag.
+TP22=(--x "3-t-2*t^2-3*s-5*s*t+5*s^2-s^2*t+4*s^2*t^2" --y "-3+5*t-t^2-s+5*s*t-4*s*t^2+2*s^2+5*s^2*t"
+  --z "-3-3*t-4*t^2-2*s+5*s*t-3*s*t^2+3*s^2+5*s^2*t+2*s^2*t^2" --domain 0,1,0,1)
+python3 -c '
+for i in range(11):
+    for j in range(11):
+        s, t = i / 10, j / 10
+        x = 3-t-2*t**2-3*s-5*s*t+5*s**2-s**2*t+4*s**2*t**2
+        y = -3+5*t-t**2-s+5*s*t-4*s*t**2+2*s**2+5*s**2*t
+        z = -3-3*t-4*t**2-2*s+5*s*t-3*s*t**2+3*s**2+5*s**2*t+2*s**2*t**2
+        print("%.17g %.17g %.17g" % (x, y, z))
+print("40 40 40")' >"$WORK/tp22_points.txt"
+run sdf "${TP22[@]}" --tolerance 0.01 --mode safe --eval "$WORK/tp22_points.txt" --json
+if [[ $(status) == 0 ]] && python3 -c '
+import json, sys
+lines = open(sys.argv[1]).read().splitlines()
+j = json.loads(lines[0])
+a = j["approximation"]
+b = j["box"]
+diag = sum((b[i + 3] - b[i]) ** 2 for i in range(3)) ** 0.5
+v = [float(line) for line in lines[1:]]
+ok = (a["tolerance"] == 0.01 and not a["exact"] and a["pieces"] >= 1 and a["degree"] == j["degree"] <= 6
+      and a["glsl_lines"] == len(j["glsl"].splitlines()) and a["patch_to_surface"]["bound"] <= 0.01
+      and a["surface_to_patch"]["bound"] <= 0.01 and a["patch_to_surface"]["method"] in ("certified", "measured")
+      and len(v) == 122 and max(v[:-1]) <= 0.01 * diag and min(v) >= 0 and v[-1] > 1)
+sys.exit(0 if ok else 1)' "$WORK/out"; then pass; else
+  fail "sdf --tolerance --eval: values ~0 on the patch (within the bound), positive far away"
+fi
+# The exact answer is unchanged without --tolerance (no "approximation").
+expect_json "sdf without --tolerance is exact" 0 '"approximation" not in j and j["degree"] == 8' sdf "${TP22[@]}" --json
+for bad in 0 -0.001 0.6 nan inf small; do
+  expect_status "sdf --tolerance $bad" 3 "invalid_tolerance in tolerance" sdf "${TP22[@]}" --tolerance "$bad"
+done
+expect_json "sdf --tolerance json error" 3 'j["error"]["code"] == "invalid_tolerance" and j["error"]["field"] == "tolerance"' \
+  sdf --implicit "x^2+y^2+z^2-1" --tolerance 0.01 --json
+# A tolerance below double's rounding cannot be met: exit 4, the best bound in the JSON.
+expect_json "sdf --tolerance not met" 4 'j["error"]["code"] == "tolerance_not_met" and 0 < j["error"]["best_bound"] < 1e-6' \
+  sdf --x s --y t --z "s*t^2" --domain 0,1,0,1 --tolerance 1e-300 --json
+# A closed surface over the whole plane keeps its exact equation, and says so.
+expect_json "sdf --tolerance on the sphere keeps the exact equation" 0 \
+  'j["approximation"]["exact"] and j["degree"] == 2 and j["approximation"]["pieces"] == 1' \
+  sdf --x "2*s/(1+s^2+t^2)" --y "2*t/(1+s^2+t^2)" --z "(1-s^2-t^2)/(1+s^2+t^2)" --tolerance 0.001 --json
+expect_json "render --tolerance" 0 'j["approximation"]["tolerance"] == 0.01 and j["hits"] > 0' \
+  render "${TP22[@]}" --tolerance 0.01 --size 24x24 --aa 1 -o "$WORK/tp22.png" --json
 expect_json "render curve" 0 'j["dimension"] == 2' render --implicit "x^2+y^2-1" --size 16x16 -o "$WORK/c.png" --json
 
 # render (docs/render.md): a PNG, decoded back here with python3's zlib (8-bit RGB,

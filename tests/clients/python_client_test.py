@@ -151,6 +151,25 @@ class LibraryTest(unittest.TestCase, PngChecks):
         self.assertEqual((caught.exception.status, caught.exception.code, caught.exception.field),
                          (400, "invalid_domain", "domain[0]"))
 
+    def test_sdf_and_render_with_a_tolerance(self):
+        # Issue 19: a cubic patch approximated within 1e-2 of its box's diagonal.
+        patch = dict(x="s", y="t", z="s^3-s*t^2", domain=[0, 1, 0, 1])
+        answer = self.client.sdf(tolerance=0.01, **patch)
+        a = answer["approximation"]
+        self.assertEqual((a["tolerance"], a["exact"]), (0.01, False))
+        self.assertEqual(a["glsl_lines"], len(answer["glsl"].splitlines()))
+        self.assertLessEqual(a["patch_to_surface"]["bound"], 0.01)
+        self.assertLessEqual(a["surface_to_patch"]["bound"], 0.01)
+        self.assertNotIn("approximation", self.client.sdf(**patch))
+        png, stats = self.client.render(tolerance=0.01, width=24, height=24, aa=1, **patch)
+        self.assertEqual(decode_png(png)[:2], (24, 24))
+        self.assertEqual((stats["tolerance"], stats["pieces"]), (0.01, a["pieces"]))
+        self.assertIn(str(stats["patch_to_surface"]).split()[1], ("certified", "measured"), stats)
+        with self.assertRaises(ic.ImplicitizerError) as caught:
+            self.client.sdf(tolerance=0.75, **patch)
+        self.assertEqual((caught.exception.status, caught.exception.code, caught.exception.field),
+                         (400, "invalid_tolerance", "tolerance"))
+
     def test_sdf_scene_safe(self):
         answer = self.client.sdf(scene=SCENE, mode="safe", name="demo")
         self.assertIn("float demo_sdf(vec3 p)", answer["glsl"])
@@ -284,6 +303,15 @@ class CommandLineTest(unittest.TestCase, PngChecks):
         self.assertEqual(result.returncode, 3, result.stderr)
         self.assertIn("invalid_domain", result.stderr)
         self.assertEqual(self.run_client("sdf", "--implicit", "x", "--shape", "hollow").returncode, 2)
+
+    def test_sdf_command_tolerance(self):
+        patch = ["--x", "s", "--y", "t", "--z", "s^3-s*t^2", "--domain", "0,1,0,1"]
+        answer = json.loads(self.assert_ok(self.run_client("sdf", *patch, "--tolerance", "0.01", "--json")))
+        self.assertEqual(answer["approximation"]["tolerance"], 0.01)
+        for bad in ("nan", "0", "small"):
+            result = self.run_client("sdf", *patch, "--tolerance", bad)
+            self.assertEqual(result.returncode, 3, result.stderr)
+            self.assertIn("invalid_tolerance", result.stderr)
 
     def test_implicitize_plain_and_json(self):
         self.assertEqual(self.assert_ok(self.run_client(

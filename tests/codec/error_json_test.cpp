@@ -20,6 +20,8 @@ TEST(EncodeError, Shapes) {
             R"({"error":{"code":"no_single_equation","message":"curve","generators":["x^2-y","y^2-x*z"]}})");
   EXPECT_EQ(encode_error(LimitExceeded(Limit::time, "slow")),
             R"({"error":{"code":"time_limit_exceeded","message":"slow","limit":"time"}})");
+  EXPECT_EQ(encode_error(ToleranceNotMet("too tight", 2.5e-5)),
+            R"({"error":{"code":"tolerance_not_met","message":"too tight","best_bound":0.000025}})");
   EXPECT_EQ(encode_error("not_found", "no such path"), R"({"error":{"code":"not_found","message":"no such path"}})");
 }
 

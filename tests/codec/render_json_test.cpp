@@ -98,5 +98,22 @@ TEST(AnswerRenderRequest, ThePngHasTheRequestedSizeAndTheJsonTheStatistics) {
   EXPECT_NE(with_png.find(R"("png_base64":"iVBORw0KGgo)"), std::string::npos);  // base64 of the PNG signature
 }
 
+TEST(AnswerRenderRequest, AToleranceDrawsTheApproximationAndReportsIt) {
+  const std::string body = R"({"x": "s", "y": "t", "z": "s^3-s*t^2", "domain": [0, 1, 0, 1], "tolerance": 0.05,
+                               "width": 24, "height": 24, "aa": 1, "format": "json"})";
+  RenderRequest r = decode_render_request(body);
+  EXPECT_EQ(r.tolerance, 0.05);
+  const RenderAnswer answer = answer_render_request(r, Budget(), RenderRequestParams{}, 2);
+  ASSERT_TRUE(answer.approximation);
+  EXPECT_EQ(answer.approximation->tolerance, 0.05);
+  EXPECT_GT(answer.approximation->glsl_lines, 0u);
+  EXPECT_GT(answer.stats.hits, 0u);
+  const std::string json = encode_render_response(answer, false);
+  EXPECT_NE(json.find(R"("approximation":{"tolerance":0.05,"exact":false,)"), std::string::npos) << json;
+  // No one polynomial stands for the pieces: the exact method does not apply.
+  r.method = MarchMethod::exact;
+  EXPECT_EQ(testing::input_error_of([&] { answer_render_request(r); }).code(), "method_not_applicable");
+}
+
 }  // namespace
 }  // namespace implicitizer

@@ -252,5 +252,30 @@ TEST(SceneJson, EncodeSceneIsCanonicalAndReadsBack) {
   EXPECT_NE(encode_scene(parse_scene_json(d)), text);
 }
 
+// A parametric leaf's tolerance is read, kept in the key at full precision, and one
+// that is not a number is refused by name.
+TEST(SceneJson, LeafToleranceIsReadAndPartOfTheKey) {
+  const std::string a = R"({"type": "parametric", "x": "s", "y": "t", "z": "s*t", "domain": [[0, 1], [0, 1]],
+                            "tolerance": 0.001})";
+  const SceneNode node = parse_scene_json(a);
+  EXPECT_EQ(node.leaf.tolerance, 0.001);
+  const std::string text = encode_scene(node);
+  EXPECT_NE(text.find(R"("tolerance":0.001)"), std::string::npos) << text;
+  EXPECT_EQ(encode_scene(parse_scene_json(text)), text);
+  std::string b = a;
+  b.replace(b.find("0.001"), 5, "0.0010000000000000002");
+  EXPECT_NE(encode_scene(parse_scene_json(b)), text);
+  const std::string none = R"({"type": "parametric", "x": "s", "y": "t", "z": "s*t"})";
+  EXPECT_EQ(encode_scene(parse_scene_json(none)).find("tolerance"), std::string::npos);
+  try {
+    parse_scene_json(R"({"type": "union", "children": [{"type": "sphere", "radius": 1},
+                       {"type": "parametric", "x": "s", "y": "t", "z": "s*t", "tolerance": "small"}]})");
+    ADD_FAILURE() << "a tolerance that is not a number was read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.code(), "invalid_tolerance");
+    EXPECT_EQ(e.field(), "scene.children[1].tolerance");
+  }
+}
+
 }  // namespace
 }  // namespace implicitizer

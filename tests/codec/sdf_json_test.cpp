@@ -133,5 +133,74 @@ TEST(EncodeSdfResponse, ShapeDimensionAndTheBoxUsed) {
   EXPECT_EQ(encode_sdf_response(answer).find("shape"), std::string::npos);
 }
 
+// tp_22 of ../shared/bench/surfaces_hard.json over [0, 1]^2 with `members`.
+std::string tp22_request(const std::string& members) {
+  return R"({"x": "3-t-2*t^2-3*s-5*s*t+5*s^2-s^2*t+4*s^2*t^2", "y": "-3+5*t-t^2-s+5*s*t-4*s*t^2+2*s^2+5*s^2*t",
+             "z": "-3-3*t-4*t^2-2*s+5*s*t-3*s*t^2+3*s^2+5*s^2*t+2*s^2*t^2", "domain": [0, 1, 0, 1])" +
+         members + "}";
+}
+
+TEST(AnswerSdfRequest, ToleranceAnswersTheApproximationAndItsBounds) {
+  const SdfRequest request = decode_sdf_request(tp22_request(R"(, "tolerance": 0.01)"));
+  EXPECT_EQ(request.tolerance, 0.01);
+  const SdfAnswer answer = answer_sdf_request(request);
+  ASSERT_TRUE(answer.approximation);
+  const ApproximationSummary& a = *answer.approximation;
+  EXPECT_EQ(a.tolerance, 0.01);
+  EXPECT_EQ(a.kept_exact, "");
+  EXPECT_GE(a.pieces, 1u);
+  EXPECT_EQ(answer.degree, a.degree);
+  EXPECT_LE(a.degree, 6);
+  EXPECT_LE(a.patch_to_surface, 0.01);
+  EXPECT_LE(a.surface_to_patch, 0.01);
+  EXPECT_EQ(a.glsl_lines, count_lines(answer.glsl));
+  EXPECT_EQ(answer.shape, SdfShape::sheet);
+  const std::string json = encode_sdf_response(answer);
+  EXPECT_NE(json.find(R"("approximation":{"tolerance":0.01,"exact":false,"degree":)"), std::string::npos) << json;
+  EXPECT_NE(json.find(R"("patch_to_surface":{"bound":)"), std::string::npos) << json;
+  EXPECT_NE(json.find(R"("glsl_lines":)" + std::to_string(a.glsl_lines)), std::string::npos) << json;
+  if (a.surface_to_patch_method == BoundMethod::measured) {
+    EXPECT_GT(a.surface_to_patch_samples, 0u);
+    EXPECT_NE(json.find(R"("method":"measured","samples":)"), std::string::npos) << json;
+  }
+  // Without a tolerance the answer is the exact one, as before: no "approximation".
+  const SdfAnswer exact = answer_sdf_request(decode_sdf_request(tp22_request("")));
+  EXPECT_FALSE(exact.approximation);
+  EXPECT_EQ(exact.degree, 8);
+  EXPECT_EQ(encode_sdf_response(exact).find("approximation"), std::string::npos);
+}
+
+TEST(AnswerSdfRequest, ToleranceErrorsNameTheirField) {
+  for (const char* bad : {"0", "-0.001", "0.6", "\"small\""}) {
+    const InputError e = input_error_of(
+        [&] { answer_sdf_request(decode_sdf_request(tp22_request(std::string(R"(, "tolerance": )") + bad))); });
+    EXPECT_EQ(e.code(), "invalid_tolerance") << bad;
+    EXPECT_EQ(e.field(), "tolerance") << bad;
+  }
+  const InputError implicit = input_error_of(
+      [] { answer_sdf_request(decode_sdf_request(R"({"implicit": "x^2+y^2+z^2-1", "tolerance": 0.01})")); });
+  EXPECT_EQ(implicit.code(), "invalid_tolerance");
+  EXPECT_EQ(implicit.field(), "tolerance");
+  const InputError scene = input_error_of([] {
+    answer_sdf_request(decode_sdf_request(R"({"scene": {"type": "sphere", "radius": 1}, "tolerance": 0.01})"));
+  });
+  EXPECT_EQ(scene.code(), "invalid_tolerance");
+  EXPECT_EQ(scene.field(), "tolerance");
+  SdfRequest solid = decode_sdf_request(tp22_request(R"(, "tolerance": 0.01, "shape": "solid")"));
+  EXPECT_EQ(input_error_of([&] { answer_sdf_request(solid); }).code(), "invalid_tolerance");
+}
+
+TEST(AnswerSdfRequest, SceneLeavesReportTheirApproximation) {
+  const SdfRequest request = decode_sdf_request(R"({"scene": {"type": "union", "children": [
+      {"type": "sphere", "radius": 0.5},
+      {"type": "parametric", "x": "s", "y": "t", "z": "s^3-s*t^2", "domain": [[0, 1], [0, 1]], "tolerance": 0.05}]}})");
+  const SdfAnswer answer = answer_sdf_request(request);
+  ASSERT_EQ(answer.leaves.size(), 1u);
+  ASSERT_TRUE(answer.leaves[0].approximation);
+  EXPECT_TRUE(answer.leaves[0].trimmed);
+  EXPECT_FALSE(answer.approximation);  // a scene's leaves say their own
+  EXPECT_NE(encode_sdf_response(answer).find(R"("approximation":{"tolerance":0.05,)"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace implicitizer

@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <optional>
 
 #include "implicitizer/core/errors.hpp"
 #include "scene/scene_support.hpp"
@@ -38,6 +40,18 @@ CompiledScene compile_curve(const SceneNode& node, SdfMode mode = SdfMode::fast)
 SceneNode parametric_curve(const std::string& x, const std::string& y,
                            std::vector<std::pair<Rational, Rational>> domain = {}) {
   return parametric(x, y, "", std::move(domain));
+}
+
+// The code and field of the InputError compiling `node` in `dimension` throws ("" when none).
+std::pair<std::string, std::string> compile_error(const SceneNode& node, int dimension = 3) {
+  try {
+    SceneParams options;
+    options.dimension = dimension;
+    compile_scene(node, options);
+  } catch (const InputError& e) {
+    return {e.code(), e.field()};
+  }
+  return {"", ""};
 }
 
 TEST(PolynomialLeaf, ImplicitSphereIsItsDistanceEstimate) {
@@ -301,16 +315,7 @@ TEST(PolynomialLeaf, CurveGlslTakesAVec2AndRunsOnLlvmpipe) {
 }
 
 TEST(PolynomialLeaf, CurveErrorsNameTheField) {
-  const auto code_and_field = [](const SceneNode& node, int dimension) -> std::pair<std::string, std::string> {
-    try {
-      SceneParams options;
-      options.dimension = dimension;
-      compile_scene(node, options);
-    } catch (const InputError& e) {
-      return {e.code(), e.field()};
-    }
-    return {"", ""};
-  };
+  const auto code_and_field = compile_error;
   EXPECT_EQ(code_and_field(implicit("x^2+y^2+z^2-1"), 2),
             std::make_pair(std::string("unknown_variable"), std::string("scene.equation")));
   EXPECT_EQ(code_and_field(parametric("s", "s^2", "s^3"), 2),
@@ -319,6 +324,112 @@ TEST(PolynomialLeaf, CurveErrorsNameTheField) {
             std::make_pair(std::string("invalid_value"), std::string("dimension")));
   // A parametric curve whose image is a point has no equation.
   EXPECT_EQ(code_and_field(parametric_curve("1", "2"), 2).first, "no_single_equation");
+}
+
+// ---------------------------------------------------------------------------------
+// Approximated patches (a tolerance): the union of the pieces' trimmed sheets.
+
+// tp_22 of ../shared/bench/surfaces_hard.json (a biquadratic patch, exact degree 8).
+SceneNode tp22(std::optional<double> tolerance) {
+  SceneNode node = parametric("3-t-2*t^2-3*s-5*s*t+5*s^2-s^2*t+4*s^2*t^2", "-3+5*t-t^2-s+5*s*t-4*s*t^2+2*s^2+5*s^2*t",
+                              "-3-3*t-4*t^2-2*s+5*s*t-3*s*t^2+3*s^2+5*s^2*t+2*s^2*t^2", unit_square());
+  node.leaf.tolerance = tolerance;
+  return node;
+}
+
+V tp22_point(double s, double t) {
+  return {3 - t - 2 * t * t - 3 * s - 5 * s * t + 5 * s * s - s * s * t + 4 * s * s * t * t,
+          -3 + 5 * t - t * t - s + 5 * s * t - 4 * s * t * t + 2 * s * s + 5 * s * s * t,
+          -3 - 3 * t - 4 * t * t - 2 * s + 5 * s * t - 3 * s * t * t + 3 * s * s + 5 * s * s * t + 2 * s * s * t * t};
+}
+
+TEST(PolynomialLeaf, ApproximatedPatchIsWithinItsBoundOnThePatch) {
+  // Safe mode: each piece's value is a lower bound of the distance to its surface,
+  // which is within patch_to_surface·diag of every point of its part of the patch.
+  const double eps = 1e-2;
+  const CompiledScene scene = testing::compile(tp22(eps), SdfMode::safe);
+  const PolynomialLeaf& leaf = scene.leaves().front();
+  const PatchApproximation* a = leaf.approximation();
+  ASSERT_NE(a, nullptr);
+  EXPECT_EQ(leaf.piece_count(), a->pieces.size());
+  EXPECT_TRUE(leaf.trimmed());
+  EXPECT_EQ(leaf.shape(), SdfShape::sheet);
+  EXPECT_EQ(leaf.tolerance(), eps);
+  EXPECT_LE(a->patch_to_surface, eps);
+  EXPECT_LE(a->surface_to_patch, eps);
+  EXPECT_GT(a->diagonal, 0);
+  double worst = 0;
+  for (int i = 0; i <= 40; ++i) {
+    for (int j = 0; j <= 40; ++j) worst = std::max(worst, scene.evaluate(tp22_point(i / 40.0, j / 40.0)));
+  }
+  EXPECT_LE(worst, a->patch_to_surface * a->diagonal * (1 + 1e-6) + 1e-9 * a->diagonal);
+  // Outside the patch's box widened by 0.2·diag every piece's cover is farther than that.
+  const SceneBox& box = leaf.frame_box();
+  const double far = 0.2 * a->diagonal;
+  const V lo{to_mpq(box.lo[0]).get_d() - far, to_mpq(box.lo[1]).get_d() - far, to_mpq(box.lo[2]).get_d() - far};
+  const V hi{to_mpq(box.hi[0]).get_d() + far, to_mpq(box.hi[1]).get_d() + far, to_mpq(box.hi[2]).get_d() + far};
+  for (const V& p : {lo, hi, V{lo.x, hi.y, lo.z}, V{hi.x, lo.y, hi.z}})
+    EXPECT_GT(scene.evaluate(p), 0.19 * a->diagonal);
+}
+
+TEST(PolynomialLeaf, ApproximatedPatchGlslRunsOnLlvmpipe) {
+  const CompiledScene scene = testing::compile(tp22(1e-2));
+  const PolynomialLeaf& leaf = scene.leaves().front();
+  ASSERT_NE(leaf.approximation(), nullptr);
+  EXPECT_EQ(testing::glslang_both(scene), "");
+  // One distance and one cover per piece, and their min.
+  const std::string glsl = scene.to_glsl();
+  if (leaf.piece_count() > 1) {
+    const std::string last = "s_leaf0_piece" + std::to_string(leaf.piece_count() - 1) + "_cover(";
+    EXPECT_NE(glsl.find(last), std::string::npos);
+    EXPECT_NE(glsl.find("min("), std::string::npos);
+  }
+  const std::string reason = testing::GlesRunner::instance().unavailable();
+  if (!reason.empty()) GTEST_SKIP() << "no headless llvmpipe: " << reason;
+  std::vector<Vec3<float>> points;
+  for (int i = 0; i <= 12; ++i) {
+    for (int j = 0; j <= 12; ++j) {
+      const V p = tp22_point(i / 12.0, j / 12.0);
+      points.push_back({static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
+    }
+  }
+  const std::vector<Vec3<float>> around = testing::random_points(200, -4.0f, 6.0f, 5);
+  points.insert(points.end(), around.begin(), around.end());
+  const testing::GpuComparison r = testing::compare_on_gpu(scene, points, {});
+  ASSERT_EQ(r.error, "");
+  for (float v : r.gpu) EXPECT_GE(v, 0.0f);
+  EXPECT_LE(r.worst_scaled, 64);
+  std::cout << "tp_22 at 1e-2: " << leaf.piece_count() << " pieces, " << r.points << " points, " << r.identical
+            << " bit-identical, worst " << r.worst_scaled << " x 2^-24 x scale\n";
+}
+
+TEST(PolynomialLeaf, ClosedSurfaceWithAToleranceKeepsItsExactEquation) {
+  SceneNode sphere = parametric("2*s/(1+s^2+t^2)", "2*t/(1+s^2+t^2)", "(1-s^2-t^2)/(1+s^2+t^2)");
+  sphere.leaf.tolerance = 1e-3;
+  const CompiledScene scene = testing::compile(sphere);
+  const PolynomialLeaf& leaf = scene.leaves().front();
+  EXPECT_EQ(leaf.approximation(), nullptr);
+  EXPECT_NE(leaf.tolerance_kept_exact(), "");
+  EXPECT_EQ(leaf.equation().total_degree(), 2);
+  EXPECT_NEAR(scene.evaluate(V{0, 0, -1}), 0, 1e-9);
+}
+
+TEST(PolynomialLeaf, BadTolerancesAreRefusedByName) {
+  const auto code_and_field = [](SceneNode node, std::optional<double> tolerance, SdfShape shape = SdfShape::automatic,
+                                 int dimension = 3) {
+    node.leaf.tolerance = tolerance;
+    node.leaf.shape = shape;
+    return compile_error(node, dimension);
+  };
+  const auto refused = std::make_pair(std::string("invalid_tolerance"), std::string("scene.tolerance"));
+  const SceneNode saddle = parametric("s", "t", "s*t", unit_square());
+  for (double eps : {0.0, -1e-3, 0.6, std::nan(""), HUGE_VAL}) EXPECT_EQ(code_and_field(saddle, eps), refused) << eps;
+  EXPECT_EQ(code_and_field(implicit("x^2+y^2+z^2-1"), 1e-3), refused);
+  EXPECT_EQ(code_and_field(saddle, 1e-3, SdfShape::solid), refused);
+  EXPECT_EQ(code_and_field(parametric_curve("s", "s^2", {{Rational(0), Rational(1)}}), 1e-3, SdfShape::automatic, 2),
+            refused);
+  // The largest tolerance is allowed.
+  EXPECT_EQ(code_and_field(saddle, 0.5).first, "");
 }
 
 }  // namespace

@@ -163,6 +163,44 @@ def test_sdf(s):
           "sdf space curve: %s %r" % (status, body))
 
 
+def test_tolerance(s):
+    # Issue 19: a cubic patch approximated within a tolerance of its box's diagonal; the
+    # tolerance is part of the cache key; bad ones are 400 invalid_tolerance by name.
+    patch = {"x": "s", "y": "t", "z": "s^3-s*t^2", "domain": [0, 1, 0, 1]}
+    status, headers, body = s.post_json("/v1/sdf", dict(patch, tolerance=0.01))
+    a = body.get("approximation", {}) if status == 200 else {}
+    check(status == 200 and headers.get("x-cache") == "miss" and a.get("tolerance") == 0.01 and a.get("exact") is False
+          and a.get("glsl_lines") == len(body["glsl"].splitlines()) and a["patch_to_surface"]["bound"] <= 0.01
+          and a["surface_to_patch"]["bound"] <= 0.01 and body.get("degree") == a.get("degree"),
+          "sdf tolerance: %s %r" % (status, a or body))
+    status, headers, _ = s.post_json("/v1/sdf", dict(patch, tolerance=0.02))
+    check(status == 200 and headers.get("x-cache") == "miss", "sdf, another tolerance: not the cached answer")
+    status, headers, body = s.post_json("/v1/sdf", patch)
+    check(status == 200 and headers.get("x-cache") == "miss" and "approximation" not in body,
+          "sdf without a tolerance: the exact answer, not the cached approximation")
+    status, headers, _ = s.post_json("/v1/sdf", dict(patch, tolerance=0.01))
+    check(status == 200 and headers.get("x-cache") == "hit", "sdf tolerance repeated: a hit %r" % headers)
+    for request, field in [(dict(patch, tolerance=0), "tolerance"), (dict(patch, tolerance=-1), "tolerance"),
+                           (dict(patch, tolerance=0.6), "tolerance"), (dict(patch, tolerance="1e-3"), "tolerance"),
+                           ({"implicit": "x^2+y^2+z^2-1", "tolerance": 0.01}, "tolerance"),
+                           ({"scene": {"type": "sphere", "radius": 1}, "tolerance": 0.01}, "tolerance"),
+                           ({"scene": {"type": "implicit", "equation": "x", "tolerance": 0.01}}, "scene.tolerance")]:
+        for path in ("/v1/sdf", "/v1/render"):
+            status, _, body = s.post_json(path, request)
+            check(status == 400 and error_code(body) == "invalid_tolerance" and body["error"].get("field") == field,
+                  "%s %r: %s %r" % (path, request, status, body))
+    # Below double's rounding: 422 with the best bound reached, never a worse answer.
+    status, _, body = s.post_json("/v1/sdf", {"x": "s", "y": "t", "z": "s*t^2", "domain": [0, 1, 0, 1],
+                                              "tolerance": 1e-300})
+    check(status == 422 and error_code(body) == "tolerance_not_met" and 0 < body["error"].get("best_bound", 0) < 1e-6,
+          "sdf tolerance not met: %s %r" % (status, body))
+    status, headers, data = s.request("POST", "/v1/render", dict(patch, tolerance=0.01, width=24, height=24, aa=1),
+                                      {"Content-Type": "application/json"})
+    check(status == 200 and headers.get("x-render-tolerance") == "0.01" and int(headers.get("x-render-pieces", 0)) >= 1
+          and (headers.get("x-render-patch-to-surface", "") + " ?").split()[1] in ("certified", "measured")
+          and int(headers.get("x-render-hits", 0)) > 0, "render tolerance headers: %s %r" % (status, headers))
+
+
 def test_render(s):
     import base64
     status, headers, data = s.request("POST", "/v1/render", {"implicit": "x^2+y^2+z^2-1", "width": 40, "height": 30,
@@ -635,6 +673,7 @@ def main():
         lambda: test_implicitize_routes_and_curves(s),
         lambda: test_sdf(s),
         lambda: test_render(s),
+        lambda: test_tolerance(s),
         lambda: test_cache(s),
         lambda: test_groebner(s),
         lambda: test_resultant(s),

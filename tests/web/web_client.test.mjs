@@ -466,6 +466,8 @@ test('typing an implicit equation directly draws it', async () => {
 test('the hyperbolic paraboloid, Enneper\'s surface and a bicubic patch are two-sided sheets', async (t) => {
   await page.click('#tab-parametric');
   await setMode('fast');
+  // Their exact equations (a tolerance draws an approximation, one-sided: next test).
+  await page.fill('#tolerance', '');
   for (const name of ['hyperbolic_paraboloid', 'enneper', 'bicubic_patch']) {
     const frame = await currentFrame();
     await page.selectOption('#examples', name);
@@ -503,6 +505,40 @@ test('the hyperbolic paraboloid, Enneper\'s surface and a bicubic patch are two-
     for (let p = 0; p < mask.length; ++p) if (mask[p] && solidMask[p] && !sheetMask[p]) ++gpuOnCaps;
     assert.ok(gpuOnCaps <= 0.02 * capOnly + 20, `${name}: nothing drawn where only the caps would be (${gpuOnCaps} of ${capOnly})`);
   }
+});
+
+// Issue 19: the page's default tolerance (1e-3 of the box diagonal) draws the bicubic
+// patch from its approximation; the bound reached is shown beside the preview, and
+// the image is the CPU renderer's of the same request, and close to the exact patch's.
+test('a bicubic patch with a tolerance renders its approximation and shows the bound', async (t) => {
+  await page.click('#tab-parametric');
+  await setMode('fast');
+  await page.fill('#tolerance', '1e-3');
+  const frame = await currentFrame();
+  const started = Date.now();
+  await page.selectOption('#examples', 'bicubic_patch');
+  await waitForFrame(frame, (d) => d.function === 'bicubic_patch_sdf' && d.mode === 'fast' && d.sides === 'one');
+  t.diagnostic(`bicubic_patch at 1e-3: request to finished image ${Date.now() - started} ms`);
+  const text = await page.textContent('#approximation');
+  t.diagnostic(text);
+  assert.match(text, /^Tolerance 0\.001 of the box diagonal: patch → surface ≤ \S+ \((certified|measured)/);
+  assert.match(text, /surface → patch ≤ \S+ \((certified|measured)/);
+  assert.match(text, /degree \d+ × \d+ pieces? · \d+ GLSL lines$/);
+  const bound = Number(await page.getAttribute('#approximation', 'data-bound'));
+  assert.ok(bound > 0 && bound <= 1e-3, `the bound reached ${bound} <= 1e-3`);
+  const request = JSON.parse(await page.getAttribute('#preview', 'data-request'));
+  assert.equal(request.tolerance, 0.001, 'the preview draws the approximation');
+  const canvas = await readCanvas();
+  const mask = silhouette(canvas.rgb, canvas.width, canvas.height);
+  const surface = mask.reduce((s, v) => s + v, 0);
+  assert.ok(surface > 0.02 * canvas.width * canvas.height, `the canvas shows the patch (${surface} pixels)`);
+  const same = await renderSameView(canvas.view, {}, t);
+  const withSame = iou(mask, silhouette(same.rgb, same.width, same.height));
+  const exact = await renderSameView(canvas.view, { tolerance: undefined }, t);
+  const withExact = iou(mask, silhouette(exact.rgb, exact.width, exact.height));
+  t.diagnostic(`IoU with the CPU renderer's approximation ${withSame.toFixed(4)}, with its exact patch ${withExact.toFixed(4)}`);
+  assert.ok(withSame >= IOU_MIN, `the CPU renderer's image of the same request (IoU ${withSame})`);
+  assert.ok(withExact >= IOU_MIN, `close to the exact patch (IoU ${withExact})`);
 });
 
 // A plane curve (no z) is drawn flat: `NAME_sdf(vec2 p)`, a 2-D picture of the box with

@@ -46,6 +46,9 @@ RenderTarget RenderTarget::compile(const SceneNode& root, const SceneParams& opt
 
   const PolynomialLeaf& leaf = scene.leaves().front();
   target.shape_ = leaf.shape();
+  // An approximation is a union of pieces, each its own surface in its own frame: no
+  // one algebraic surface stands for it (the exact method does not apply).
+  if (leaf.approximation()) return target;
   const SceneFrame frame = make_scene_frame(leaf.frame_box());
   // G has the sign of the leaf's value near the surface: −F for a solid whose enclosed
   // region is where F > 0 (PolynomialLeaf::negated()), so that the exact method's

@@ -1,5 +1,6 @@
 #include "implicitizer/scene/polynomial_leaf.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -91,6 +92,8 @@ Polynomial into_space(const Polynomial& curve) {
 
 LeafEquation implicitize_leaf(const PolynomialLeafSource& source, const Budget& budget, const std::string& field,
                               int dimension) {
+  // A tolerance over a bounded domain approximates instead (PolynomialLeaf::build):
+  // the exact equation, the expensive part, is not computed.
   LeafEquation out;
   Parametrization parametrization;
   if (dimension == 2 && !source.coordinates[2].empty()) {
@@ -108,6 +111,7 @@ LeafEquation implicitize_leaf(const PolynomialLeafSource& source, const Budget& 
   } catch (const InputError& e) {
     throw at_field(e, field, "domain");
   }
+  if (source.tolerance && out.patch->domain) return out;
   ImplicitizeParams params;
   params.budget = budget;
   try {
@@ -136,6 +140,7 @@ LeafEquation leaf_equation(NodeKind kind, const PolynomialLeafSource& source, co
   } else {
     out = implicitize_leaf(source, budget, field, dimension);
   }
+  if (out.patch && source.tolerance && out.patch->domain) return out;  // approximated: no F
   if (out.f.is_constant()) {
     throw InputError("constant_polynomial", "a constant polynomial has no surface")
         .in_field(field + (kind == NodeKind::implicit ? ".equation" : ""));
@@ -165,6 +170,23 @@ SceneBox fitted_box(const PatchBounds& bounds, const std::string& field) {
     }
   }
   return box;
+}
+
+// The source's tolerance, checked: a parametric surface over a bounded domain, a sheet,
+// 0 < EPS <= 0.5 (beyond half the diagonal an approximation says nothing).
+void check_tolerance(NodeKind kind, const PolynomialLeafSource& source, const std::string& field, int dimension) {
+  const double eps = *source.tolerance;
+  const auto refuse = [&](const std::string& message) {
+    return InputError("invalid_tolerance", message).in_field(field + ".tolerance");
+  };
+  if (kind != NodeKind::parametric) throw refuse("only parametric inputs are approximated");
+  if (!std::isfinite(eps) || !(eps > 0) || eps > 0.5) {
+    throw refuse("a tolerance is a fraction of the patch box's diagonal in (0, 0.5]");
+  }
+  if (dimension == 2) throw refuse("only parametric surfaces are approximated, not plane curves");
+  if (source.shape == SdfShape::solid) {
+    throw refuse("an approximation is a sheet (the patch): ask for shape sheet or auto, or leave out the tolerance");
+  }
 }
 
 }  // namespace
@@ -205,6 +227,7 @@ Enclosure resolve_shape(const PolynomialLeafSource& source, const Polynomial& f,
 
 PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& source, const SceneBox& default_box,
                                      SdfMode mode, const Budget& budget, const std::string& field, int dimension) {
+  if (source.tolerance) check_tolerance(kind, source, field, dimension);
   const LeafEquation equation = leaf_equation(kind, source, budget, field, dimension);
   SceneBox frame_box = source.box ? *source.box : default_box;
   if (equation.patch && !source.box) frame_box = fitted_box(equation.patch->bounds, field);
@@ -213,15 +236,35 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
   // up to its closure, all of its algebraic surface in the fitted box (docs/sdf.md,
   // "Patches"), which the frame clips as for an implicit leaf.
   const bool bounded_patch = equation.patch && equation.patch->domain;
+  if (bounded_patch && source.tolerance) {
+    ApproximationParams params;
+    params.tolerance = *source.tolerance;
+    PatchApproximation approximation;
+    try {
+      approximation = approximate_patch(equation.patch->parametrization, *equation.patch->domain, params, budget);
+    } catch (const InputError& e) {
+      throw at_field(e, field, e.code() == "invalid_tolerance" ? "tolerance" : "x");
+    }
+    PolynomialLeaf leaf =
+        build_approximated(std::move(approximation), equation.patch->parametrization, frame_box, mode, budget, field);
+    leaf.tolerance_ = source.tolerance;
+    return leaf;
+  }
   PolynomialLeaf leaf(equation.f);
+  leaf.tolerance_ = source.tolerance;
+  if (source.tolerance) {
+    leaf.kept_exact_ =
+        "a closed surface over the whole parameter plane keeps its exact equation (its degree is already low)";
+  }
   Enclosure shape;
+  Piece piece;
   try {
     shape = resolve_shape(source, equation.f, frame_box, bounded_patch, dimension, budget);
     const Polynomial f = shape.negate ? -equation.f : equation.f;
     if (mode == SdfMode::safe) {
-      leaf.safe_ = SafeSdf::build(f, frame_box, budget, shape.shape);
+      piece.safe = SafeSdf::build(f, frame_box, budget, shape.shape);
     } else {
-      leaf.fast_ = FastSdf::build(f, frame_box, budget, shape.shape);
+      piece.fast = FastSdf::build(f, frame_box, budget, shape.shape);
     }
   } catch (const InputError& e) {
     // invalid_box concerns the box; degree_too_high the equation.
@@ -233,10 +276,50 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
   leaf.negated_ = shape.negate;
   // A solid asked of a patch is the solid F <= 0 in its box: nothing to trim.
   if (bounded_patch && shape.shape == SdfShape::sheet) {
-    leaf.cover_ =
+    piece.cover =
         PatchCover::build(equation.patch->parametrization, *equation.patch->domain, equation.f, frame_box, budget);
   }
+  leaf.pieces_.push_back(std::move(piece));
   return leaf;
+}
+
+PolynomialLeaf PolynomialLeaf::build_approximated(PatchApproximation approximation,
+                                                  const Parametrization& parametrization, const SceneBox& frame_box,
+                                                  SdfMode mode, const Budget& budget, const std::string& field) {
+  PolynomialLeaf leaf(approximation.pieces.front().equation);
+  leaf.frame_box_ = frame_box;
+  leaf.shape_ = SdfShape::sheet;
+  leaf.shape_reason_ = "an approximated patch is a sheet";
+  for (const ApproximationPiece& source : approximation.pieces) {
+    budget.check("approximated leaf");
+    // Each piece in the box fitted to X(S_k), as a patch's frame is to X(D): its own
+    // scale, so its fp32 evaluation is as accurate as a whole patch's.
+    const SceneBox box = fitted_box(source.box, field);
+    Piece piece;
+    try {
+      if (mode == SdfMode::safe) {
+        piece.safe = SafeSdf::build(source.equation, box, budget, SdfShape::sheet);
+      } else {
+        piece.fast = FastSdf::build(source.equation, box, budget, SdfShape::sheet);
+      }
+    } catch (const InputError& e) {
+      throw at_field(e, field, e.code() == "invalid_box" ? "box" : "");
+    }
+    piece.cover = PatchCover::build(parametrization, source.domain, source.equation, box, budget);
+    leaf.pieces_.push_back(std::move(piece));
+  }
+  leaf.approximation_ = std::move(approximation);
+  return leaf;
+}
+
+Vec3<float> PolynomialLeaf::trim_corner(bool upper) const {
+  Vec3<float> corner = upper ? pieces_.front().cover->hi() : pieces_.front().cover->lo();
+  for (const Piece& piece : pieces_) {
+    const Vec3<float> c = upper ? piece.cover->hi() : piece.cover->lo();
+    corner = upper ? Vec3<float>{std::max(corner.x, c.x), std::max(corner.y, c.y), std::max(corner.z, c.z)}
+                   : Vec3<float>{std::min(corner.x, c.x), std::min(corner.y, c.y), std::min(corner.z, c.z)};
+  }
+  return corner;
 }
 
 // ---------------------------------------------------------------------------------
@@ -277,15 +360,29 @@ T evaluate_leaf(const SceneEvaluator<T>& e, const CompiledNode& n, const Vec3<T>
   return e.leaf(n).evaluate(p);
 }
 
-std::string emit_leaf(SceneGlslWriter& w, const CompiledNode& n, const std::string& p) {
-  const PolynomialLeaf& leaf = w.leaf(n);
-  const std::string id = "leaf" + std::to_string(n.leaf);
-  w.require_helper(id, leaf.to_glsl(w.prefix() + "_" + id));
+// Piece k of a leaf: its distance, then its cover. A leaf of one surface keeps the
+// names leaf<n> and leaf<n>_cover; an approximation's pieces are leaf<n>_piece<k>.
+std::string emit_piece(SceneGlslWriter& w, const PolynomialLeaf& leaf, const std::string& id, std::size_t k,
+                       const CompiledNode& n, const std::string& p) {
+  w.require_helper(id, leaf.to_glsl(w.prefix() + "_" + id, k));
   const std::string d = w.value(w.call(id, p), SceneGlslWriter::type(n));
   if (!leaf.trimmed()) return d;
   const std::string cover = id + "_cover";
-  w.require_helper(cover, leaf.cover()->to_glsl(w.prefix() + "_" + cover), PatchCover::glsl_suffixes());
+  w.require_helper(cover, leaf.cover(k)->to_glsl(w.prefix() + "_" + cover), PatchCover::glsl_suffixes());
   return w.value(w.call(cover, p + ", " + d), "trimmed to the patch's cover");
+}
+
+std::string emit_leaf(SceneGlslWriter& w, const CompiledNode& n, const std::string& p) {
+  const PolynomialLeaf& leaf = w.leaf(n);
+  const std::string id = "leaf" + std::to_string(n.leaf);
+  if (leaf.piece_count() == 1) return emit_piece(w, leaf, id, 0, n, p);
+  // The union of the pieces' sheets, in evaluate()'s order (min is exact in float).
+  std::string value = emit_piece(w, leaf, id + "_piece0", 0, n, p);
+  for (std::size_t k = 1; k < leaf.piece_count(); ++k) {
+    const std::string t = emit_piece(w, leaf, id + "_piece" + std::to_string(k), k, n, p);
+    value = w.value("min(" + value + ", " + t + ")", "the union of the approximation's pieces");
+  }
+  return value;
 }
 
 }  // namespace

@@ -45,6 +45,14 @@ std::string encode_error(const NoSingleEquation& error) {
   });
 }
 
+std::string encode_error(const ToleranceNotMet& error) {
+  return encode_error_object("tolerance_not_met", error.what(), [&](json::Writer& w) {
+    w.Key("best_bound");
+    w.SetMaxDecimalPlaces(json::Writer::kDefaultMaxDecimalPlaces);  // 2e-5 is not 0.000
+    w.Double(error.best());
+  });
+}
+
 std::string encode_error(const LimitExceeded& error) {
   return encode_error_object(limit_error_code(error.limit()), error.what(), [&](json::Writer& w) {
     w.Key("limit");

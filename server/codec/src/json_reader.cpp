@@ -108,6 +108,14 @@ double read_timeout_seconds(const rapidjson::Value& v) {
   return ms / 1000.0;
 }
 
+double read_tolerance(const rapidjson::Value& v, const std::string& field) {
+  if (!v.IsNumber()) {
+    throw InputError("invalid_tolerance", "a tolerance is a number in (0, 0.5], relative to the patch box's diagonal")
+        .in_field(field);
+  }
+  return v.GetDouble();
+}
+
 std::vector<std::string> read_box_texts(const rapidjson::Value& v) {
   if (!v.IsArray()) throw wrong_type("box", "an array of numbers (six; four for a curve)");
   std::vector<std::string> box;

@@ -64,6 +64,11 @@ std::vector<int> read_ints(const rapidjson::Value& v, const std::string& field);
 /// limit). Throws `wrong_type` or `invalid_value`.
 double read_timeout_seconds(const rapidjson::Value& v);
 
+/// A tolerance (a fraction of a patch box's diagonal): a JSON number, passed on as
+/// is; its range is the leaf's to check (polynomial_leaf.hpp). Throws
+/// `invalid_tolerance` at `field` for anything but a number.
+double read_tolerance(const rapidjson::Value& v, const std::string& field);
+
 /// A scene box: six JSON numbers, passed on as the exact decimal value of each double
 /// (17 significant digits round-trip; the SDF frame reads it as an exact rational).
 /// The count is the service's to check (parse_request_box).

@@ -124,6 +124,7 @@ std::string encode_render_response(const RenderAnswer& answer, bool with_png) {
     }
     w.Key("dimension");
     w.Int(answer.dimension);
+    if (answer.approximation) json::write_approximation(w, *answer.approximation);
     if (with_png) {
       w.Key("png_base64");
       json::write_string(w, encode_base64(answer.png));

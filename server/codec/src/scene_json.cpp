@@ -122,7 +122,7 @@ std::string allowed_keys(const NodeKindInfo& info) {
   if (info.arity == NodeArity::nary) allowed += ", children";
   if (info.arity == NodeArity::unary) allowed += ", child";
   if (info.kind == NodeKind::implicit) allowed += ", equation, shape, box";
-  if (info.kind == NodeKind::parametric) allowed += ", x, y, z, parameters, domain, shape, box";
+  if (info.kind == NodeKind::parametric) allowed += ", x, y, z, parameters, domain, tolerance, shape, box";
   for (const ParameterSpec& p : info.parameters) allowed += ", " + std::string(p.name);
   return allowed;
 }
@@ -232,6 +232,10 @@ void SceneDecoder::read_member(const std::string& key, const rapidjson::Value& v
     } catch (const InputError& e) {
       throw e.in_field(field);
     }
+  } else if ((implicit || parametric) && key == "tolerance") {
+    // An implicit leaf's is read too, so that the leaf refuses it by name
+    // (`invalid_tolerance`: only parametric inputs are approximated).
+    node.leaf.tolerance = json::read_tolerance(v, field);
   } else if ((implicit || parametric) && key == "box") {
     node.leaf.box = read_box(v, field);
   } else {
@@ -317,6 +321,10 @@ void write_leaf_members(SceneWriter& w, const SceneNode& node) {
       node.leaf.shape != SdfShape::automatic) {
     w.Key("shape");
     w.String(to_string(node.leaf.shape));
+  }
+  if (node.leaf.tolerance) {
+    w.Key("tolerance");
+    w.Double(*node.leaf.tolerance);  // shortest round-trip: the cache key keeps it exact
   }
   if (node.leaf.box) {
     w.Key("box");

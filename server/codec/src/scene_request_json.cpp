@@ -56,7 +56,46 @@ std::vector<std::string> read_domain_texts(const rapidjson::Value& v) {
   return texts;
 }
 
+void write_bound(Writer& w, const char* key, double bound, BoundMethod method, std::size_t samples) {
+  w.Key(key);
+  w.StartObject();
+  w.Key("bound");
+  w.Double(bound);
+  w.Key("method");
+  write_string(w, to_string(method));
+  if (method == BoundMethod::measured) {
+    w.Key("samples");
+    w.Uint64(samples);
+  }
+  w.EndObject();
+}
+
 }  // namespace
+
+void write_approximation(Writer& w, const ApproximationSummary& s) {
+  w.Key("approximation");
+  // Full precision (a bound of 1e-5 is not 0.000), then the writer's usual places.
+  w.SetMaxDecimalPlaces(Writer::kDefaultMaxDecimalPlaces);
+  w.StartObject();
+  w.Key("tolerance");
+  w.Double(s.tolerance);
+  w.Key("exact");
+  w.Bool(!s.kept_exact.empty());
+  if (!s.kept_exact.empty()) {
+    w.Key("reason");
+    write_string(w, s.kept_exact);
+  }
+  w.Key("degree");
+  w.Int(s.degree);
+  w.Key("pieces");
+  w.Uint64(s.pieces);
+  w.Key("glsl_lines");
+  w.Uint64(s.glsl_lines);
+  write_bound(w, "patch_to_surface", s.patch_to_surface, s.patch_to_surface_method, 0);
+  write_bound(w, "surface_to_patch", s.surface_to_patch, s.surface_to_patch_method, s.surface_to_patch_samples);
+  w.EndObject();
+  configure(w);
+}
 
 void SceneRequestChoices::apply(SceneRequest& request) const {
   if (mode) request.mode = parse_choice(*mode, "mode", parse_sdf_mode);
@@ -79,6 +118,7 @@ SceneRequestChoices read_scene_request(ObjectReader& reader, SceneRequest& reque
   }
   if (const auto* v = reader.take("parameters")) request.parameters = read_strings(*v, "parameters");
   if (const auto* v = reader.take("domain")) request.domain = read_domain_texts(*v);
+  if (const auto* v = reader.take("tolerance")) request.tolerance = read_tolerance(*v, "tolerance");
   if (const auto* v = reader.take("box")) request.box = read_box_texts(*v);
   if (const auto* v = reader.take("name")) request.name = read_string(*v, "name");
   SceneRequestChoices choices;

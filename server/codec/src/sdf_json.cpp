@@ -22,6 +22,7 @@ void write_leaves(json::Writer& w, const std::vector<SdfLeafSummary>& leaves) {
     w.Bool(leaf.trimmed);
     w.Key("shape");
     json::write_string(w, to_string(leaf.shape));
+    if (leaf.approximation) json::write_approximation(w, *leaf.approximation);
     w.EndObject();
   }
   w.EndArray();
@@ -75,6 +76,7 @@ std::string encode_sdf_response(const SdfAnswer& answer) {
       w.Key("leaves");
       write_leaves(w, answer.leaves);
     }
+    if (answer.approximation) json::write_approximation(w, *answer.approximation);
     w.Key("uniforms");
     const std::string uniforms = encode_scene_uniforms(answer.uniforms);
     w.RawValue(uniforms.data(), uniforms.size(), rapidjson::kArrayType);

@@ -70,7 +70,12 @@ RenderAnswer answer_render_request(const RenderRequest& request, const Budget& c
   answer.precision = request.precision;
   answer.dimension = target.scene().dimension();
   const CompiledScene& scene = target.scene();
-  if (scene.leaves().size() == 1 && scene.node_count() == 1) answer.shape = scene.leaves()[0].shape();
+  if (scene.leaves().size() == 1 && scene.node_count() == 1) {
+    answer.shape = scene.leaves()[0].shape();
+    if (source.one_leaf && scene.leaves()[0].tolerance()) {
+      answer.approximation = summarize_approximation(scene.leaves()[0], count_lines(scene.to_glsl()));
+    }
+  }
   return answer;
 }
 

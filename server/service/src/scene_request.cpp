@@ -50,6 +50,8 @@ bool mentions_z(const std::string& equation, const Budget& budget) {
 SceneNode leaf_of(const SceneRequest& request, int& dimension, const Budget& budget) {
   SceneNode node;
   node.leaf.shape = request.shape;
+  // The leaf checks it (an implicit input's is `invalid_tolerance` there).
+  node.leaf.tolerance = request.tolerance;
   if (request.parametric) {
     node.kind = NodeKind::parametric;
     node.leaf.coordinates = *request.parametric;
@@ -74,6 +76,33 @@ SceneNode leaf_of(const SceneRequest& request, int& dimension, const Budget& bud
 }  // namespace
 
 const char* to_string(SdfMode mode) { return mode == SdfMode::safe ? "safe" : "fast"; }
+
+std::size_t count_lines(const std::string& text) {
+  const auto newlines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+  return newlines + (!text.empty() && text.back() != '\n' ? 1 : 0);
+}
+
+std::optional<ApproximationSummary> summarize_approximation(const PolynomialLeaf& leaf, std::size_t glsl_lines) {
+  if (!leaf.tolerance()) return std::nullopt;
+  ApproximationSummary s;
+  s.tolerance = *leaf.tolerance();
+  s.glsl_lines = glsl_lines;
+  s.pieces = leaf.piece_count();
+  const PatchApproximation* a = leaf.approximation();
+  if (!a) {
+    // The exact equation: its zero set is the patch's surface, both distances 0.
+    s.kept_exact = leaf.tolerance_kept_exact();
+    s.degree = leaf.equation().total_degree();
+    return s;
+  }
+  s.degree = a->max_degree;
+  s.patch_to_surface = a->patch_to_surface;
+  s.patch_to_surface_method = a->patch_to_surface_method;
+  s.surface_to_patch = a->surface_to_patch;
+  s.surface_to_patch_method = a->surface_to_patch_method;
+  s.surface_to_patch_samples = a->surface_to_patch_samples;
+  return s;
+}
 
 SceneBox parse_request_box(const std::vector<std::string>& numbers, int dimension, const Budget& budget) {
   SceneBox box = SceneBox::default_box();
@@ -140,6 +169,10 @@ RequestScene make_request_scene(const SceneRequest& request, const Budget& budge
     }
     if (!request.domain.empty()) {
       throw invalid_domain("a scene's parametric leaves carry their own \"domain\"", "domain");
+    }
+    if (request.tolerance) {
+      throw InputError("invalid_tolerance", "a scene's parametric leaves carry their own \"tolerance\"")
+          .in_field("tolerance");
     }
     out.params.box = parse_request_box(request.box, 3, budget);
     make_scene_frame(out.params.box);  // validates a box no leaf may read

@@ -52,11 +52,16 @@ SdfAnswer describe_sdf_request(const CompiledSdfRequest& compiled) {
     answer.box[i + 3] = nearest_double(box.hi[i]);
   }
   if (one_leaf) answer.shape = scene.leaves()[0].shape();
+  const std::size_t lines = count_lines(answer.glsl);
   for (const PolynomialLeaf& leaf : scene.leaves()) {
-    answer.degree = std::max(answer.degree, leaf.equation().total_degree());
+    // An approximation's degree is its largest piece's (equation() is its first piece).
+    const std::optional<ApproximationSummary> approximation = summarize_approximation(leaf, lines);
+    const std::int32_t degree = approximation ? approximation->degree : leaf.equation().total_degree();
+    answer.degree = std::max(answer.degree, degree);
     if (!source.one_leaf) {
-      answer.leaves.push_back(
-          {to_string(leaf.equation()), leaf.equation().total_degree(), leaf.trimmed(), leaf.shape()});
+      answer.leaves.push_back({to_string(leaf.equation()), degree, leaf.trimmed(), leaf.shape(), approximation});
+    } else {
+      answer.approximation = approximation;
     }
   }
   if (!source.one_leaf) answer.nodes = scene.node_count();

@@ -14,6 +14,30 @@ std::string format_number(double value) {
   return text;
 }
 
+// A bound and how it was established: "2.5e-05 certified", "4.1e-04 measured 1200"
+// (the sample size of a measured bound).
+std::string format_bound(double bound, BoundMethod method, std::size_t samples) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3g %s", bound, to_string(method).c_str());
+  std::string out = text;
+  if (method == BoundMethod::measured) out += " " + std::to_string(samples);
+  return out;
+}
+
+// The approximation's report (an input with a tolerance), as the JSON's members.
+void set_approximation_headers(Response& response, const ApproximationSummary& a) {
+  char tolerance[32];
+  std::snprintf(tolerance, sizeof tolerance, "%.17g", a.tolerance);
+  response.set("X-Render-Tolerance", tolerance);
+  response.set("X-Render-Approximation-Exact", a.kept_exact.empty() ? "false" : "true");
+  response.set("X-Render-Degree", std::to_string(a.degree));
+  response.set("X-Render-Pieces", std::to_string(a.pieces));
+  response.set("X-Render-Glsl-Lines", std::to_string(a.glsl_lines));
+  response.set("X-Render-Patch-To-Surface", format_bound(a.patch_to_surface, a.patch_to_surface_method, 0));
+  response.set("X-Render-Surface-To-Patch",
+               format_bound(a.surface_to_patch, a.surface_to_patch_method, a.surface_to_patch_samples));
+}
+
 Response make_png_response(const RenderAnswer& answer) {
   const RenderStats& s = answer.stats;
   Response response = make_response(http::status::ok, answer.png, "image/png");
@@ -30,6 +54,7 @@ Response make_png_response(const RenderAnswer& answer) {
   response.set("X-Render-Elapsed-Ms", format_number(s.elapsed_ms));
   if (answer.shape) response.set("X-Render-Shape", to_string(*answer.shape));
   response.set("X-Render-Dimension", std::to_string(answer.dimension));
+  if (answer.approximation) set_approximation_headers(response, *answer.approximation);
   return response;
 }
 

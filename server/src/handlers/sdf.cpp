@@ -1,5 +1,7 @@
 #include "handlers/sdf.hpp"
 
+#include <cstdio>
+
 #include "implicitizer/codec/scene_json.hpp"
 #include "implicitizer/codec/sdf_json.hpp"
 
@@ -20,6 +22,10 @@ std::string canonical_key(const SdfRequest& request) {
   }
   append_key_field(key, to_string(request.shape));
   append_key_list(key, std::optional(request.domain));
+  // The shortest round-trip text: two tolerances share a key iff they are one double.
+  char tolerance[32] = "exact";
+  if (request.tolerance) std::snprintf(tolerance, sizeof tolerance, "%.17g", *request.tolerance);
+  append_key_field(key, tolerance);
   append_key_field(key, to_string(request.mode));
   append_key_list(key, std::optional(request.box));
   append_key_field(key, request.name);

@@ -99,7 +99,8 @@ class RenderTarget {
   /// last step uses. h = 1e-3·length_unit().
   std::array<double, 3> tetrahedron_normal(const std::array<double, 3>& p, std::uint64_t* evaluations = nullptr) const;
 
-  /// The algebraic surface, when the scene is a single polynomial leaf.
+  /// The algebraic surface, when the scene is a single polynomial leaf of one exact
+  /// equation (not an approximation, polynomial_leaf.hpp).
   const std::optional<AlgebraicSurface>& algebraic() const { return algebraic_; }
 
   /// The object's box: the leaf's frame box when the scene is one polynomial leaf

@@ -38,11 +38,30 @@
 /// its closure, all of Z in the fitted box (a closed surface): nothing is trimmed, the
 /// frame box clips as for an implicit leaf and auto may pick a solid (docs/sdf.md,
 /// "Patches").
+///
+/// Approximated patches (a tolerance EPS, issue 19). A parametric leaf over a bounded
+/// domain with source.tolerance is not implicitized: approximate_patch()
+/// (approximation/patch_approximation.hpp) gives pieces q_k = 0 over sub-domains S_k,
+/// and the leaf is their union, min_k t_k(p), each t_k the trimmed sheet above for
+/// q_k in its own frame box (the exact box of X(S_k) padded as a patch's) and its own
+/// cover of X(S_k). Each t_k is >= 0, so the min is the union of the sheets. In safe
+/// mode each t_k is a lower bound of the distance to {q_k = 0} inside X(S_k)'s cover,
+/// so the min is one of the distance to the union of those trimmed zero sets; that
+/// union is within EPS·diag of X(D) both ways (approximation() reports the two bounds
+/// and how they were established), which is the error against the true patch. An
+/// approximation is a sheet: asking it for a solid is InputError `invalid_tolerance`
+/// (an approximating surface's inside says nothing about the patch). Over the whole
+/// parameter plane (closed surfaces: sphere, torus, Steiner's surface) the leaf keeps
+/// its exact equation, whose degree is already low, and tolerance_kept_exact() says so.
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "implicitizer/approximation/patch_approximation.hpp"
 #include "implicitizer/core/budget.hpp"
 #include "implicitizer/implicitization/patch_bounds.hpp"
 #include "implicitizer/polynomial/polynomial.hpp"
@@ -61,35 +80,46 @@ namespace implicitizer {
 class PolynomialLeaf {
  public:
   /// Builds the leaf of `source` (kind implicit or parametric; see scene_node.hpp)
-  /// under `budget`: parses (ring x, y, z), implicitizes (parametric), bounds the
-  /// patch over its domain (parametric), compiles the distance of `mode` in the
-  /// leaf's box (source.box, else, parametric, the padded patch box, else
-  /// `default_box`) and covers the patch (a sheet over a bounded domain).
+  /// under `budget`: parses (ring x, y, z), implicitizes (parametric) or approximates
+  /// (parametric with a tolerance over a bounded domain), bounds the patch over its
+  /// domain (parametric), compiles the distance of `mode` in the leaf's box
+  /// (source.box, else, parametric, the padded patch box, else `default_box`; an
+  /// approximation's pieces each in their own padded box) and covers the patch (a
+  /// sheet over a bounded domain).
   /// Errors are InputError with field `field` + ".equation" / ".x" / ".domain" / … :
   /// parse errors, `constant_polynomial`, `invalid_box`, `degree_too_high` (safe),
   /// `invalid_domain`, `unbounded_patch`, `no_single_equation` (the image is not a
-  /// surface); LimitExceeded from the budget.
+  /// surface), `invalid_tolerance` (".tolerance": not in (0, 0.5], an implicit leaf's,
+  /// a curve's, or with shape solid); ToleranceNotMet (approximate_patch() could not
+  /// reach the tolerance); LimitExceeded from the budget.
   /// `dimension` is 3 (a surface) or 2 (a plane curve, see the file comment; a
   /// parametric curve's z text must be empty, else InputError `invalid_value` at
   /// field + ".z"). The shape is resolved as the file comment says.
   static PolynomialLeaf build(NodeKind kind, const PolynomialLeafSource& source, const SceneBox& default_box,
                               SdfMode mode, const Budget& budget, const std::string& field, int dimension = 3);
 
-  /// The leaf's value at p: d (untrimmed, signed) or the trimmed sheet.
+  /// The leaf's value at p: d (untrimmed, signed), the trimmed sheet, or the min of
+  /// the pieces' trimmed sheets (an approximation).
   template <typename T>
   T evaluate(const Vec3<T>& p) const {
-    const T d = fast_ ? fast_->evaluate<T>(p.x, p.y, p.z) : safe_->evaluate<T>(p.x, p.y, p.z);
-    return cover_ ? cover_->distance_lower_bound(p, d) : d;
+    T value = pieces_.front().evaluate(p);
+    for (std::size_t k = 1; k < pieces_.size(); ++k) value = std::min(value, pieces_[k].evaluate(p));
+    return value;
   }
 
-  /// `float FUNCTION(vec3 p)`: the distance of F = 0 before trimming (the scene's
-  /// GLSL applies the cover's function when trimmed()).
-  std::string to_glsl(const std::string& function) const {
-    return fast_ ? fast_->to_glsl(function) : safe_->to_glsl(function);
+  /// How many surfaces the leaf joins by min: 1, or an approximation's pieces.
+  std::size_t piece_count() const { return pieces_.size(); }
+  /// `float FUNCTION(vec3 p)`: the distance of piece k's surface (F = 0, or q_k = 0)
+  /// before trimming (the scene's GLSL applies piece k's cover when trimmed()).
+  std::string to_glsl(const std::string& function, std::size_t k = 0) const {
+    const Piece& piece = pieces_[k];
+    return piece.fast ? piece.fast->to_glsl(function) : piece.safe->to_glsl(function);
   }
+  /// The cover piece k is cut to (null when not trimmed).
+  const PatchCover* cover(std::size_t k = 0) const { return pieces_[k].cover ? &*pieces_[k].cover : nullptr; }
 
-  /// Whether the leaf is a patch trimmed to its cover.
-  bool trimmed() const { return cover_.has_value(); }
+  /// Whether the leaf is a patch trimmed to its cover(s).
+  bool trimmed() const { return pieces_.front().cover.has_value(); }
   /// The shape the leaf's value describes (never automatic: what was picked).
   SdfShape shape() const { return shape_; }
   /// Why that shape: "asked", or decide_enclosure()'s reason under automatic.
@@ -97,31 +127,56 @@ class PolynomialLeaf {
   /// Whether the value is that of −F (a solid whose F is negative on its box's
   /// boundary: the enclosed region is then where F > 0).
   bool negated() const { return negated_; }
-  /// The cover a trimmed leaf is cut to (null when not trimmed).
-  const PatchCover* cover() const { return cover_ ? &*cover_ : nullptr; }
-  /// The box around the cover's boxes, float corners (trimmed leaves only).
-  Vec3<float> trim_lo() const { return cover_->lo(); }
+  /// The box around every piece's cover boxes, float corners (trimmed leaves only).
+  Vec3<float> trim_lo() const { return trim_corner(false); }
   /// See trim_lo().
-  Vec3<float> trim_hi() const { return cover_->hi(); }
+  Vec3<float> trim_hi() const { return trim_corner(true); }
   /// The implicit equation F (in x, y, z; a curve's has no z), as given or
-  /// implicitized, before any negation (negated()).
+  /// implicitized, before any negation (negated()); for an approximation, its first
+  /// piece's q (approximation() has every piece).
   const Polynomial& equation() const { return equation_; }
-  /// The frame box the distance is computed in.
+  /// The frame box the distance is computed in (an approximation: the box fitted to
+  /// the whole patch, which the answers report; each piece has its own).
   const SceneBox& frame_box() const { return frame_box_; }
+  /// The approximation the leaf is built from (null: the exact equation).
+  const PatchApproximation* approximation() const { return approximation_ ? &*approximation_ : nullptr; }
+  /// The tolerance the source asked for (none: exact).
+  std::optional<double> tolerance() const { return tolerance_; }
+  /// Why a leaf with a tolerance kept its exact equation ("" when it did not).
+  const std::string& tolerance_kept_exact() const { return kept_exact_; }
 
  private:
+  // One surface of the leaf, in its own frame box, trimmed to its own cover.
+  struct Piece {
+    // Exactly one is set, by the mode (a branch per evaluation is cheaper than
+    // std::visit's dispatch and reads as plainly).
+    std::optional<FastSdf> fast;
+    std::optional<SafeSdf> safe;
+    std::optional<PatchCover> cover;
+
+    template <typename T>
+    T evaluate(const Vec3<T>& p) const {
+      const T d = fast ? fast->evaluate<T>(p.x, p.y, p.z) : safe->evaluate<T>(p.x, p.y, p.z);
+      return cover ? cover->distance_lower_bound(p, d) : d;
+    }
+  };
+
   explicit PolynomialLeaf(Polynomial equation) : equation_(std::move(equation)) {}
+  // The componentwise min (lower) or max (upper) of the pieces' cover corners.
+  Vec3<float> trim_corner(bool upper) const;
+  static PolynomialLeaf build_approximated(PatchApproximation approximation, const Parametrization& parametrization,
+                                           const SceneBox& frame_box, SdfMode mode, const Budget& budget,
+                                           const std::string& field);
 
   Polynomial equation_;
-  // Exactly one is set, by the mode (a branch per evaluation is cheaper than
-  // std::visit's dispatch and reads as plainly).
-  std::optional<FastSdf> fast_;
-  std::optional<SafeSdf> safe_;
+  std::vector<Piece> pieces_;  // one, or an approximation's
   SceneBox frame_box_;
   SdfShape shape_ = SdfShape::solid;
   std::string shape_reason_;
   bool negated_ = false;
-  std::optional<PatchCover> cover_;
+  std::optional<PatchApproximation> approximation_;
+  std::optional<double> tolerance_;
+  std::string kept_exact_;
 };
 
 }  // namespace implicitizer

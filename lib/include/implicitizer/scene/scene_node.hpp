@@ -175,6 +175,10 @@ struct PolynomialLeafSource {
   /// What the leaf's value describes (sdf_shape.hpp); automatic decides at compile
   /// time and PolynomialLeaf::shape() says what it picked.
   SdfShape shape = SdfShape::automatic;
+  /// parametric over a bounded domain: approximate the patch within this fraction of
+  /// its box's diagonal, both ways (polynomial_leaf.hpp, "Approximated patches");
+  /// none: the exact equation. 0 < tolerance <= 0.5 (else `invalid_tolerance`).
+  std::optional<double> tolerance;
 };
 
 /// One node of a scene tree.

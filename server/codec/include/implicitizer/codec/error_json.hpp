@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "implicitizer/approximation/patch_approximation.hpp"
 #include "implicitizer/core/errors.hpp"
 
 namespace implicitizer {
@@ -16,6 +17,10 @@ std::string encode_error(const InputError& error);
 
 /// `{"error": {"code": "no_single_equation", "message", "generators": [..]}}`.
 std::string encode_error(const NoSingleEquation& error);
+
+/// `{"error": {"code": "tolerance_not_met", "message", "best_bound"}}`: best_bound is
+/// the smallest two-sided bound reached, relative to the patch box's diagonal.
+std::string encode_error(const ToleranceNotMet& error);
 
 /// `{"error": {"code", "message", "limit"}}` with code `time_limit_exceeded`,
 /// `size_limit_exceeded` or `cancelled` and limit `time`, `size` or `cancelled`.

@@ -60,6 +60,8 @@ struct RenderAnswer {
   EvaluationPrecision precision = EvaluationPrecision::single;
   int dimension = 3;              ///< 2: a plane curve, drawn in the plane
   std::optional<SdfShape> shape;  ///< the shape drawn, when the object is one polynomial leaf
+  /// An input with a tolerance: how it was built (glsl_lines: of the GLSL /v1/sdf returns).
+  std::optional<ApproximationSummary> approximation;
 };
 
 /// Parses "float" or "double"; throws InputError `invalid_value` (field "precision") otherwise.
@@ -84,8 +86,8 @@ void check_render_size(const RenderRequest& request, const RenderRequestParams& 
 /// of "implicit"), the errors of compile_scene() under the request's field names
 /// (rethrow_request_error: "implicit", "x", "domain", …), `invalid_camera` ("eye",
 /// "target"), `method_not_applicable` ("method": exact on a scene that is not one
-/// polynomial leaf); NoSingleEquation for a parametrization whose image is not a
-/// surface or curve; LimitExceeded.
+/// polynomial leaf, or an approximation); NoSingleEquation for a parametrization whose
+/// image is not a surface or curve; ToleranceNotMet; LimitExceeded.
 RenderAnswer answer_render_request(const RenderRequest& request, const Budget& budget = Budget(),
                                    const RenderRequestParams& limits = {}, std::size_t threads = 0);
 

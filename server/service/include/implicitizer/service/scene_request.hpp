@@ -12,11 +12,14 @@
 /// plane curve: the scene's dimension is 2 and its box is four numbers x0, y0, x1, y1.
 
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "implicitizer/approximation/patch_approximation.hpp"
 #include "implicitizer/core/budget.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/core/rational.hpp"
@@ -47,7 +50,34 @@ struct SceneRequest {
   std::vector<std::string> box;
   SdfMode mode = SdfMode::fast;  ///< docs/sdf.md
   std::string name = "surface";  ///< the GLSL function is NAME_sdf
+  /// A parametric surface's tolerance, a fraction of its patch box's diagonal: the
+  /// patch is approximated within it both ways (polynomial_leaf.hpp, "Approximated
+  /// patches"); none: the exact equation. A scene's leaves carry their own.
+  std::optional<double> tolerance;
 };
+
+/// How a leaf with a tolerance was built: what the answers report as "approximation".
+struct ApproximationSummary {
+  double tolerance = 0;        ///< EPS asked
+  std::string kept_exact;      ///< why the exact equation was kept ("" when approximated)
+  std::int32_t degree = 0;     ///< the largest piece degree (kept exact: F's)
+  std::size_t pieces = 1;      ///< surfaces joined by min
+  std::size_t glsl_lines = 0;  ///< lines of the scene's GLSL
+  /// Both one-sided distances relative to the patch box's diagonal (0, certified,
+  /// when the exact equation was kept), and how each was established.
+  double patch_to_surface = 0;
+  BoundMethod patch_to_surface_method = BoundMethod::certified;
+  double surface_to_patch = 0;
+  BoundMethod surface_to_patch_method = BoundMethod::certified;
+  std::size_t surface_to_patch_samples = 0;  ///< the sample a measured bound was taken on
+};
+
+/// The summary of `leaf` when its source had a tolerance (nullopt otherwise), with
+/// `glsl_lines` lines of GLSL.
+std::optional<ApproximationSummary> summarize_approximation(const PolynomialLeaf& leaf, std::size_t glsl_lines);
+
+/// The number of lines of `text` (a last line without its newline counts).
+std::size_t count_lines(const std::string& text);
 
 /// "fast" or "safe": the mode's name in requests and answers (parse_sdf_mode reads it).
 const char* to_string(SdfMode mode);

@@ -34,6 +34,8 @@ struct SdfLeafSummary {
   std::int32_t degree = 0;
   bool trimmed = false;              ///< a parametric patch trimmed to its box (an unsigned sheet)
   SdfShape shape = SdfShape::solid;  ///< what the leaf's value describes (never automatic)
+  /// With a tolerance: how the leaf was built (glsl_lines: the whole scene's).
+  std::optional<ApproximationSummary> approximation;
 };
 
 /// What a request computed.
@@ -52,6 +54,8 @@ struct SdfAnswer {
   std::size_t nodes = 0;               ///< nodes of the scene (0: an implicit surface)
   std::vector<SceneUniform> uniforms;  ///< the scene's uniforms, in declaration order
   std::vector<SdfLeafSummary> leaves;  ///< the scene's polynomial leaves
+  /// An input with a tolerance (not a scene: its leaves say their own): how it was built.
+  std::optional<ApproximationSummary> approximation;
 };
 
 /// A request's scene, compiled: what answer_sdf_request() describes, and what
@@ -75,9 +79,10 @@ SdfAnswer describe_sdf_request(const CompiledSdfRequest& compiled);
 /// then the errors of compile_scene() under the request's field names (an implicit
 /// input's "implicit": `unknown_variable`, `constant_polynomial`, `degree_too_high`
 /// in mode safe where terms leave fp32's range; a parametric input's "x", "y", "z",
-/// "domain": `invalid_domain`, `unbounded_patch`; a scene's node paths
+/// "domain": `invalid_domain`, `unbounded_patch`; "tolerance": `invalid_tolerance`; a scene's node paths
 /// "scene.children[1].radius"); NoSingleEquation for a parametrization whose image
-/// is not a surface or curve; LimitExceeded.
+/// is not a surface or curve; ToleranceNotMet (a tolerance the approximation could not
+/// reach within its limits, with the best bound reached); LimitExceeded.
 SdfAnswer answer_sdf_request(const SdfRequest& request, const Budget& budget = Budget());
 
 }  // namespace implicitizer

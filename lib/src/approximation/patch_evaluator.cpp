@@ -1,0 +1,103 @@
+#include "patch_evaluator.hpp"
+
+#include <cmath>
+
+#include "implicitizer/core/rational.hpp"
+
+namespace implicitizer::approximation {
+
+DoublePolynomial::DoublePolynomial(const Polynomial& p) : variables_(p.ring()->num_variables()) {
+  for (std::size_t t = 0; t < p.num_terms(); ++t) {
+    coefficients_.push_back(to_mpq(p.coefficient(t)).get_d());
+    const std::vector<std::int32_t> e = p.exponents(t);
+    exponents_.insert(exponents_.end(), e.begin(), e.end());
+  }
+}
+
+double DoublePolynomial::value(const double* x) const {
+  double sum = 0;
+  for (std::size_t t = 0; t < coefficients_.size(); ++t) {
+    double term = coefficients_[t];
+    for (std::size_t v = 0; v < variables_; ++v) term *= std::pow(x[v], exponents_[t * variables_ + v]);
+    sum += term;
+  }
+  return sum;
+}
+
+double DoublePolynomial::value_and_gradient(const double* x, double* gradient) const {
+  double sum = 0;
+  for (std::size_t v = 0; v < variables_; ++v) gradient[v] = 0;
+  for (std::size_t t = 0; t < coefficients_.size(); ++t) {
+    const std::int32_t* e = exponents_.data() + t * variables_;
+    double term = coefficients_[t];
+    for (std::size_t v = 0; v < variables_; ++v) term *= std::pow(x[v], e[v]);
+    sum += term;
+    for (std::size_t v = 0; v < variables_; ++v) {
+      if (e[v] == 0) continue;
+      // ∂/∂x_v of c·Π x^e: the same product with x_v^(e_v − 1), times e_v.
+      double d = coefficients_[t] * e[v] * std::pow(x[v], e[v] - 1);
+      for (std::size_t w = 0; w < variables_; ++w) {
+        if (w != v) d *= std::pow(x[w], e[w]);
+      }
+      gradient[v] += d;
+    }
+  }
+  return sum;
+}
+
+FramedPolynomial::FramedPolynomial(const Polynomial& q, const Frame& frame) : frame_(frame) {
+  const RingPtr& space = q.ring();
+  std::vector<Polynomial> x;
+  for (std::size_t i = 0; i < 3; ++i) {
+    x.push_back(Polynomial::constant(space, to_rational(mpq_class(frame.center[i]))) +
+                Polynomial::variable(space, i).scaled(to_rational(mpq_class(frame.half))));
+  }
+  q_ = DoublePolynomial(q.compose(space, x));
+}
+
+double FramedPolynomial::value(const Point& x) const {
+  const Point u = {(x[0] - frame_.center[0]) / frame_.half, (x[1] - frame_.center[1]) / frame_.half,
+                   (x[2] - frame_.center[2]) / frame_.half};
+  return q_.value(u.data());
+}
+
+double FramedPolynomial::value_and_gradient(const Point& x, Point& gradient) const {
+  const Point u = {(x[0] - frame_.center[0]) / frame_.half, (x[1] - frame_.center[1]) / frame_.half,
+                   (x[2] - frame_.center[2]) / frame_.half};
+  const double value = q_.value_and_gradient(u.data(), gradient.data());
+  for (double& g : gradient) g /= frame_.half;
+  return value;
+}
+
+PatchEvaluator::PatchEvaluator(const std::vector<Polynomial>& forms) {
+  for (std::size_t i = 0; i < 4; ++i) forms_[i] = DoublePolynomial(forms[i]);
+}
+
+bool PatchEvaluator::point(double s, double t, Point& x) const {
+  const double st[2] = {s, t};
+  const double w = forms_[0].value(st);
+  if (w == 0) return false;
+  for (std::size_t i = 0; i < 3; ++i) x[i] = forms_[i + 1].value(st) / w;
+  return true;
+}
+
+bool PatchEvaluator::point_and_derivatives(double s, double t, Point& x, Point& ds, Point& dt) const {
+  const double st[2] = {s, t};
+  double dw[2], dxi[2];
+  const double w = forms_[0].value_and_gradient(st, dw);
+  if (w == 0) return false;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double xi = forms_[i + 1].value_and_gradient(st, dxi);
+    x[i] = xi / w;
+    // (ξ/ω)' = (ξ' − x·ω')/ω.
+    ds[i] = (dxi[0] - x[i] * dw[0]) / w;
+    dt[i] = (dxi[1] - x[i] * dw[1]) / w;
+  }
+  return true;
+}
+
+double distance(const Point& a, const Point& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+}  // namespace implicitizer::approximation
