@@ -17,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -35,6 +36,9 @@ struct TraceStatistics {
   std::size_t stalled = 0;   ///< kMaxSteps steps without a hit or a miss
   double mean_steps = 0;     ///< evaluations per ray
   int max_steps = 0;         ///< the most evaluations of one ray
+  /// Per ray, row by row (side × side entries): 1 where the ray hit, 0 where it missed
+  /// the box, left it or stalled: the hit mask two functions are compared by.
+  std::vector<std::uint8_t> hit_mask;
 };
 
 inline constexpr double kHitTolerance = 1e-4;     ///< × h: the tracer stops below this |v|
@@ -72,6 +76,7 @@ TraceStatistics trace_rays(const TracePoint& lo, const TracePoint& hi, int side,
     tan_half = std::max({tan_half, std::fabs(dot(right)) / dot(forward), std::fabs(dot(up)) / dot(forward)});
   }
   TraceStatistics stats;
+  stats.hit_mask.assign(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 0);
   double total_steps = 0;
   for (int j = 0; j < side; ++j) {
     for (int i = 0; i < side; ++i) {
@@ -100,6 +105,7 @@ TraceStatistics trace_rays(const TracePoint& lo, const TracePoint& hi, int side,
         ++steps;
         if (std::fabs(v) < kHitTolerance * h) {
           ++stats.hits;
+          stats.hit_mask[static_cast<std::size_t>(j) * static_cast<std::size_t>(side) + static_cast<std::size_t>(i)] = 1;
           const double error = hit_error(TracePoint{px, py, pz});
           if (error > kFarHitTolerance * h) {
             ++stats.far_hits;
