@@ -11,7 +11,7 @@ namespace implicitizer::approximation {
 namespace {
 
 const char* const kWhere = "approximation: surface to patch";
-constexpr std::size_t kSampleSide = 17;
+constexpr std::size_t kSampleSide = 25;
 constexpr std::size_t kSeedSide = 25;
 
 // Newton's projection of p onto {q = 0} along ∇q; none when it does not converge.
@@ -33,8 +33,7 @@ struct Seeds {
   std::vector<std::array<double, 2>> parameters;
 };
 
-Seeds seed_grid(const PatchEvaluator& patch, const ParameterRect& rect) {
-  Seeds seeds;
+void add_seed_grid(const PatchEvaluator& patch, const ParameterRect& rect, Seeds& seeds) {
   for (std::size_t i = 0; i < kSeedSide; ++i) {
     for (std::size_t j = 0; j < kSeedSide; ++j) {
       const double s = rect[0] + (rect[1] - rect[0]) * double(i) / double(kSeedSide - 1);
@@ -45,7 +44,6 @@ Seeds seed_grid(const PatchEvaluator& patch, const ParameterRect& rect) {
       seeds.parameters.push_back({s, t});
     }
   }
-  return seeds;
 }
 
 // |X(s*, t*) − y| after Gauss–Newton on |X(s, t) − y|² from the nearest seed, clamped
@@ -77,37 +75,91 @@ double distance_to_patch(const PatchEvaluator& patch, const Seeds& seeds, const 
   return best;
 }
 
-}  // namespace
+// Zeros of q on the normal segment X + λ·ν, |λ| <= reach: every sign change between
+// 17 equally spaced λ, bisected.
+void normal_line_zeros(const FramedPolynomial& q, const Point& x, const Point& xs, const Point& xt, double reach,
+                       std::vector<Point>& zeros) {
+  Point nu{xs[1] * xt[2] - xs[2] * xt[1], xs[2] * xt[0] - xs[0] * xt[2], xs[0] * xt[1] - xs[1] * xt[0]};
+  const double length = distance(nu, Point{});
+  if (!(length > 0)) return;
+  const auto at = [&](double lambda) {
+    return Point{x[0] + lambda * nu[0] / length, x[1] + lambda * nu[1] / length, x[2] + lambda * nu[2] / length};
+  };
+  constexpr int kSteps = 16;
+  double previous_lambda = -reach, previous = q.value(at(-reach));
+  for (int k = 1; k <= kSteps; ++k) {
+    const double lambda = -reach + 2 * reach * k / kSteps, value = q.value(at(lambda));
+    if ((value > 0) != (previous > 0)) {
+      double a = previous_lambda, b = lambda;
+      for (int halving = 0; halving < 60; ++halving) {
+        const double middle = (a + b) / 2;
+        ((q.value(at(middle)) > 0) == (previous > 0) ? a : b) = middle;
+      }
+      zeros.push_back(at((a + b) / 2));
+    }
+    previous_lambda = lambda, previous = value;
+  }
+}
 
-SurfaceToPatch measure_surface_to_patch(const PatchEvaluator& patch, const FramedPolynomial& q,
-                                        const ParameterRect& piece, double reach, const Budget& budget) {
-  const double ws = (piece[1] - piece[0]) / 4, wt = (piece[3] - piece[2]) / 4;
-  const ParameterRect widened{piece[0] - ws, piece[1] + ws, piece[2] - wt, piece[3] + wt};
-  const Seeds seeds = seed_grid(patch, widened);
-  std::mt19937_64 random(19);
+// Newton projections of X moved by a random length up to `reach` and by `reach`, in
+// random directions; kept when they moved at most `reach`.
+void projected_zeros(const FramedPolynomial& q, const Point& x, double reach, std::mt19937_64& random,
+                     std::vector<Point>& zeros) {
   std::normal_distribution<double> normal;
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (const double fraction : {uniform(random), 1.0}) {
+    Point p = x, direction{normal(random), normal(random), normal(random)};
+    const double length = reach * fraction / std::max(distance(direction, Point{}), 1e-300);
+    for (std::size_t k = 0; k < 3; ++k) p[k] += length * direction[k];
+    const std::optional<Point> y = project_onto_surface(q, p, reach * 10);
+    if (y && distance(*y, p) <= reach) zeros.push_back(*y);
+  }
+}
+
+}  // namespace
+
+ParameterRect widened(const ParameterRect& r) {
+  const double ws = (r[1] - r[0]) / 4, wt = (r[3] - r[2]) / 4;
+  return {r[0] - ws, r[1] + ws, r[2] - wt, r[3] + wt};
+}
+
+SurfaceToPatch measure_surface_to_patch(const PatchEvaluator& patch, const FramedPolynomial& q,
+                                        const ParameterRect& piece, const ParameterRect& domain, double reach,
+                                        const Budget& budget) {
+  // Seeds: a grid of S' and one of D' (S' ⊂ D'); projections stay in D'.
+  const ParameterRect whole = widened(domain);
+  Seeds near, far;
+  add_seed_grid(patch, widened(piece), near);
+  add_seed_grid(patch, whole, far);
   SurfaceToPatch result;
-  if (seeds.points.empty()) return result;
+  if (near.points.empty() || far.points.empty()) return result;
+  std::mt19937_64 random(19);
+  std::vector<Point> zeros;
+  // The normal segments start on S widened by an eighth of its sides, for the caps of
+  // the tube beyond S's edges; the zeros farther than `reach` from X(S) are dropped
+  // below (the trimming removes them).
+  const double es = (piece[1] - piece[0]) / 8, et = (piece[3] - piece[2]) / 8;
+  const ParameterRect scan{piece[0] - es, piece[1] + es, piece[2] - et, piece[3] + et};
   for (std::size_t i = 0; i < kSampleSide; ++i) {
     budget.check(kWhere);
     for (std::size_t j = 0; j < kSampleSide; ++j) {
-      const double s = piece[0] + (piece[1] - piece[0]) * double(i) / double(kSampleSide - 1);
-      const double t = piece[2] + (piece[3] - piece[2]) * double(j) / double(kSampleSide - 1);
-      Point x;
-      if (!patch.point(s, t, x)) continue;
-      // Two offsets per grid point: one of random length, one of the full reach (the
-      // farthest points of {q = 0} the trimming keeps).
-      for (const double fraction : {uniform(random), 1.0}) {
-        Point p = x, direction{normal(random), normal(random), normal(random)};
-        const double length = reach * fraction / std::max(distance(direction, Point{}), 1e-300);
-        for (std::size_t k = 0; k < 3; ++k) p[k] += length * direction[k];
-        const std::optional<Point> y = project_onto_surface(q, p, reach * 10);
-        if (!y || distance(*y, p) > reach) continue;
-        ++result.samples;
-        result.distance = std::max(result.distance, distance_to_patch(patch, seeds, widened, *y));
-      }
+      const double s = scan[0] + (scan[1] - scan[0]) * double(i) / double(kSampleSide - 1);
+      const double t = scan[2] + (scan[3] - scan[2]) * double(j) / double(kSampleSide - 1);
+      Point x, xs, xt;
+      if (!patch.point_and_derivatives(s, t, x, xs, xt)) continue;
+      normal_line_zeros(q, x, xs, xt, reach, zeros);
+      projected_zeros(q, x, reach, random, zeros);
     }
+  }
+  Seeds own;
+  add_seed_grid(patch, piece, own);
+  for (const Point& y : zeros) {
+    if (distance_to_patch(patch, own, piece, y) > reach) continue;
+    // Two starts: a folded patch brings another part of X(D') close, where a single
+    // projection can stop in a local minimum.
+    const double d = std::min(distance_to_patch(patch, near, whole, y), distance_to_patch(patch, far, whole, y));
+    result.distance = std::max(result.distance, d);
+    ++result.samples;
   }
   return result;
 }

@@ -3,16 +3,27 @@
 // the patch lie from the patch, on a stated sample; and a quick estimate of the other
 // direction that lets the driver skip the exact certificate of hopeless degrees.
 //
-// Sample (measure_surface_to_patch): a 16×16 grid of parameters over the piece S
-// (cell centres), at each the patch point X(s, t) moved by a random offset of length
-// up to `reach` (= 0.1·h, h the largest half side of the piece's box: the part of
-// {q = 0} the trimming keeps) in a uniformly random direction (a fixed seed, so the
-// answer is reproducible). Each is Newton-projected onto {q = 0} along ∇q; converged
-// points that moved at most `reach` are kept. The distance of a kept point y to X(S')
-// (S' = S widened by a quarter of its sides, so that the patch's continuation beyond
-// the edge of S counts, as it does for the exact equation) is |X(s*, t*) − y| for the
-// Gauss–Newton projection (s*, t*) of y seeded at the nearest point of a 25×25 grid of
-// S': the distance to an actual patch point, so never below the true distance.
+// Sample (measure_surface_to_patch), on a 25×25 grid of parameters over the piece S
+// widened by an eighth of its sides (for the caps of the tube beyond S's edges), with
+// reach = 0.1·h (h the largest half side of the piece's box: the trimming keeps the
+// points of {q = 0} within reach of X(S); the others found are dropped):
+//   - every zero of q on the normal segment X(s, t) + λ·ν, |λ| <= reach, found by a
+//     sign change between 17 equally spaced λ and bisection (sheets that cross the
+//     tube: a random sample of 17×17 points with two offsets missed one of tp_22 at
+//     1e-3 that the test's own sample found);
+//   - X(s, t) moved by a random length up to reach and by reach itself, in uniformly
+//     random directions (a fixed seed, so the answer is
+//     reproducible), each Newton-projected onto {q = 0} along ∇q; converged points that moved at most reach are kept.
+//     The distance of a kept point y to X(D')
+// (D' = D widened by a quarter of its sides, so that the patch's continuation beyond
+// the edge counts, as it does for the exact equation; the pieces are joined by min, so
+// the patch as a whole is what a point of one piece's surface must be near) is
+// the smaller |X(s*, t*) − y| of two Gauss–Newton projections (s*, t*) in D' of y,
+// seeded at the nearest point of a 25×25 grid of S' (S widened likewise) and at that
+// of a 25×25 grid of D' (a folded patch such as tp_22 brings another part close):
+// the distance to an actual patch point, so never below the true distance. (S' alone
+// is too short where the parametrization is slow: measured on tri_quartic near s = 0,
+// points of {q = 0} at 0.1·h from X(S) lie by X(s < −S's quarter) of the exact patch.)
 
 #include <array>
 #include <cstddef>
@@ -31,9 +42,13 @@ struct SurfaceToPatch {
   std::size_t samples = 0;  ///< points of {q = 0} measured
 };
 
-/// See the file comment.
+/// R widened by a quarter of its sides on every side.
+ParameterRect widened(const ParameterRect& r);
+
+/// See the file comment; `domain` is D, `piece` S.
 SurfaceToPatch measure_surface_to_patch(const PatchEvaluator& patch, const FramedPolynomial& q,
-                                        const ParameterRect& piece, double reach, const Budget& budget);
+                                        const ParameterRect& piece, const ParameterRect& domain, double reach,
+                                        const Budget& budget);
 
 /// max |q(X)|/|∇q(X)| over a side×side grid of the piece: the first-order distance of
 /// the patch to {q = 0}, an estimate (not a bound) used only to skip degrees.

@@ -51,9 +51,11 @@ struct ApproximationPiece {
   /// Every point of X(S) is within this distance (absolute units) of {q = 0}.
   double patch_to_surface = 0;
   BoundMethod patch_to_surface_method = BoundMethod::certified;
-  /// Every point of {q = 0} near X(S) (the part the trimming keeps) is within this
-  /// distance of X(S') (S' = S widened, so that the edge's continuation counts as it
-  /// does for the exact equation); see the file comment of the .cpp for the sample.
+  /// Every point of {q = 0} near X(S) (within 0.1·h of it, h the largest half side of
+  /// `box`: the part the trimming keeps) is within this distance of X(D') (D' = D
+  /// widened by a quarter of its sides, so that the edge's continuation counts as it
+  /// does for the exact equation), measured on the sample of
+  /// lib/src/approximation/surface_distance.hpp.
   double surface_to_patch = 0;
   BoundMethod surface_to_patch_method = BoundMethod::measured;
   std::size_t surface_to_patch_samples = 0;  ///< points of {q = 0} the measurement used
