@@ -283,34 +283,6 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
   return leaf;
 }
 
-namespace {
-
-// The largest half side of a box, in double.
-double half_side(const SceneBox& box) {
-  double half = 0;
-  for (std::size_t i = 0; i < 3; ++i) half = std::max(half, to_mpq(box.hi[i] - box.lo[i]).get_d() / 2);
-  return half;
-}
-
-// A piece's cover trims at the whole patch's scale: its lengths are fractions of the
-// piece's frame (h_k), so they are scaled by H / h_k (H the leaf's frame). The user
-// sees the patch, not the pieces: what the trimming promises (points of Z farther than
-// 0.1·H from X(D) stay away from the leaf, patch_cover.hpp) holds per piece as it holds
-// for the exact equation, while a piece's own edges, interior to D, need no finer
-// trimming than the patch's outer ones. Without the scaling every small piece would
-// crowd its edges with boxes of h_k/20 and the cover would dominate the GLSL.
-PatchCoverParams piece_cover_params(const SceneBox& leaf_frame, const SceneBox& piece_frame) {
-  const double ratio = std::max(1.0, half_side(leaf_frame) / half_side(piece_frame));
-  PatchCoverParams params;
-  params.tolerance *= ratio;
-  params.reach *= ratio;
-  params.margin *= ratio;
-  params.resolution *= ratio;
-  return params;
-}
-
-}  // namespace
-
 PolynomialLeaf PolynomialLeaf::build_approximated(PatchApproximation approximation,
                                                   const Parametrization& parametrization, const SceneBox& frame_box,
                                                   SdfMode mode, const Budget& budget, const std::string& field) {
@@ -333,8 +305,7 @@ PolynomialLeaf PolynomialLeaf::build_approximated(PatchApproximation approximati
     } catch (const InputError& e) {
       throw at_field(e, field, e.code() == "invalid_box" ? "box" : "");
     }
-    piece.cover = PatchCover::build(parametrization, source.domain, source.equation, box, budget,
-                                    piece_cover_params(frame_box, box));
+    piece.cover = PatchCover::build(parametrization, source.domain, source.equation, box, budget);
     leaf.pieces_.push_back(std::move(piece));
   }
   leaf.approximation_ = std::move(approximation);
