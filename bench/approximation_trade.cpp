@@ -5,7 +5,7 @@
 /// For each surface (default: tp_22, tp_33, tri_quartic, biquadratic_patch, enneper of
 /// shared/bench) on D = [0, 1]² and each tolerance EPS (default: exact, 1e-4, 1e-3,
 /// 1e-2), the parametric leaf as a request makes it (shape auto: a sheet trimmed to the
-/// patch; no box: fitted), in mode fast, at fp32 exactly as the GLSL computes:
+/// patch; no box: fitted), in mode fast (--mode safe: safe), at fp32 exactly as the GLSL computes:
 ///   - degree × pieces and total terms of the equations, lines of the scene's GLSL;
 ///   - ns per evaluation of the C++ float twin at uniform points of the frame box (one
 ///     run: compare within a surface, never across runs);
@@ -57,14 +57,15 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: implicitizer-approximation-trade [--surface NAME[,NAME...]] [--tolerance EPS[,EPS...]]\n"
-    "                                        [--points N] [--rays R] [--samples S] [--markdown]\n"
+    "                                        [--points N] [--rays R] [--samples S] [--mode fast|safe]\n                "
+    "                        [--markdown]\n"
     "\n"
     "The trade between exact and approximate implicitization of patches on [0,1]^2:\n"
     "degree x pieces, GLSL lines, ns per fp32 evaluation, sphere-tracing steps, the\n"
     "reported bound, the measured two-sided error and the hit-mask IoU against the\n"
     "exact equation. EPS 0 is the exact equation. Defaults: --surface\n"
     "tp_22,tp_33,tri_quartic,biquadratic_patch,enneper --tolerance 0,1e-4,1e-3,1e-2\n"
-    "--points 4000 --rays 96 --samples 512\n";
+    "--points 4000 --rays 96 --samples 512 --mode fast\n";
 
 struct Config {
   std::vector<std::string> surfaces = {"tp_22", "tp_33", "tri_quartic", "biquadratic_patch", "enneper"};
@@ -73,6 +74,7 @@ struct Config {
   int rays = 96;
   std::size_t samples = 512;
   bool markdown = false;
+  SdfMode mode = SdfMode::fast;
 };
 
 std::vector<double> parse_tolerances(const std::string& flag, const std::string& text) {
@@ -106,6 +108,10 @@ Config parse_config(int argc, char** argv) {
       config.rays = static_cast<int>(parse_count(flag, flags.value(), 1, 4096));
     } else if (flag == "--samples") {
       config.samples = static_cast<std::size_t>(parse_count(flag, flags.value(), 16, 4096));
+    } else if (flag == "--mode") {
+      const std::string mode = flags.value();
+      if (mode != "fast" && mode != "safe") throw InputError("invalid_argument", "mode fast or safe").in_field(flag);
+      config.mode = mode == "safe" ? SdfMode::safe : SdfMode::fast;
     } else if (flag == "--markdown") {
       config.markdown = true;
     } else {
@@ -132,8 +138,7 @@ class DoublePolynomial {
     long double value = 0;
     gradient = {0, 0, 0};
     for (const Term& t : terms_) {
-      const std::array<long double, 3> power = {power_of(x[0], t.e[0]), power_of(x[1], t.e[1]),
-                                                power_of(x[2], t.e[2])};
+      const std::array<long double, 3> power = {power_of(x[0], t.e[0]), power_of(x[1], t.e[1]), power_of(x[2], t.e[2])};
       value += t.c * power[0] * power[1] * power[2];
       for (std::size_t k = 0; k < 3; ++k) {
         if (t.e[k] == 0) continue;
@@ -182,8 +187,8 @@ struct Row {
   std::size_t glsl_lines = 0;
   double ns = 0, steps = 0, iou = 1;
   double patch_to_surface = 0, surface_to_patch = 0;  // measured, / diagonal
-  std::size_t unconverged = 0;                          // patch points whose Newton steps found no zero
-  double reported = 0;                                  // the larger of the reported bounds (0: exact)
+  std::size_t unconverged = 0;                        // patch points whose Newton steps found no zero
+  double reported = 0;                                // the larger of the reported bounds (0: exact)
 };
 
 SceneNode patch_node(const Surface& surface, double tolerance) {
@@ -196,8 +201,8 @@ SceneNode patch_node(const Surface& surface, double tolerance) {
 }
 
 /// The largest distance from X(s, t), (s, t) uniform in D, to its piece's surface.
-void measure_patch_to_surface(const PatchApproximation& approximation, const PatchSample& sample,
-                              const Config& config, double diagonal, Row& row) {
+void measure_patch_to_surface(const PatchApproximation& approximation, const PatchSample& sample, const Config& config,
+                              double diagonal, Row& row) {
   std::vector<DoublePolynomial> pieces;
   for (const ApproximationPiece& piece : approximation.pieces) pieces.emplace_back(piece.equation);
   std::mt19937_64 random(7);
@@ -227,7 +232,7 @@ Row measure(const Surface& surface, double tolerance, const PatchSample& wide, c
             const Config& config, const Point& lo, const Point& hi, const std::vector<std::uint8_t>& exact_mask) {
   Row row;
   const CompiledScene scene =
-      compile_scene(patch_node(surface, tolerance), SceneParams{SdfMode::fast, SceneBox::default_box(), "trade"});
+      compile_scene(patch_node(surface, tolerance), SceneParams{config.mode, SceneBox::default_box(), "trade"});
   const PolynomialLeaf& leaf = scene.leaves().front();
   const std::string glsl = scene.to_glsl();
   row.glsl_lines = static_cast<std::size_t>(std::count(glsl.begin(), glsl.end(), '\n'));
@@ -237,11 +242,13 @@ Row measure(const Surface& surface, double tolerance, const PatchSample& wide, c
   if (const PatchApproximation* approximation = leaf.approximation()) {
     std::size_t terms = 0;
     for (const ApproximationPiece& piece : approximation->pieces) terms += piece.equation.num_terms();
-    row.degree_pieces = std::to_string(approximation->max_degree) + " × " + std::to_string(approximation->pieces.size());
+    row.degree_pieces =
+        std::to_string(approximation->max_degree) + " × " + std::to_string(approximation->pieces.size());
     row.terms = std::to_string(terms);
     row.reported = std::max(approximation->patch_to_surface, approximation->surface_to_patch);
-    row.bound = format("%.2g", approximation->patch_to_surface) + " " + to_string(approximation->patch_to_surface_method) +
-                " / " + format("%.2g", approximation->surface_to_patch) + " " +
+    row.bound = format("%.2g", approximation->patch_to_surface) + " " +
+                to_string(approximation->patch_to_surface_method) + " / " +
+                format("%.2g", approximation->surface_to_patch) + " " +
                 to_string(approximation->surface_to_patch_method);
     measure_patch_to_surface(*approximation, sample, config, diagonal, row);
   } else {
@@ -275,7 +282,8 @@ Row measure(const Surface& surface, double tolerance, const PatchSample& wide, c
 }
 
 std::vector<Surface> chosen_surfaces(const Config& config) {
-  std::vector<Surface> all = read_surface_suite(std::string(IMPLICITIZER_BENCH_DIR) + "/surfaces_public.json", "public");
+  std::vector<Surface> all =
+      read_surface_suite(std::string(IMPLICITIZER_BENCH_DIR) + "/surfaces_public.json", "public");
   for (Surface& s : read_surface_suite(std::string(IMPLICITIZER_BENCH_DIR) + "/surfaces_hard.json", "hard")) {
     all.push_back(std::move(s));
   }
@@ -290,8 +298,8 @@ std::vector<Surface> chosen_surfaces(const Config& config) {
 
 int run(const Config& config) {
   std::vector<std::vector<std::string>> table = {{"surface", "EPS", "degree × pieces", "terms", "GLSL lines",
-                                                  "ns / eval", "steps / ray", "bound (p→s / s→p)",
-                                                  "measured p→s", "measured s→p", "IoU"}};
+                                                  "ns / eval", "steps / ray", "bound (p→s / s→p)", "measured p→s",
+                                                  "measured s→p", "IoU"}};
   int status = 0;
   for (const Surface& surface : chosen_surfaces(config)) {
     std::cerr << "measuring " << surface.name << "...\n";
@@ -300,14 +308,15 @@ int run(const Config& config) {
     const PatchSample wide(parametrization, {-0.25, 1.25, -0.25, 1.25}, config.samples * 3 / 2);
     // The rays of every row: through the exact leaf's frame box, fitted to X(D).
     const CompiledScene exact =
-        compile_scene(patch_node(surface, 0), SceneParams{SdfMode::fast, SceneBox::default_box(), "exact"});
+        compile_scene(patch_node(surface, 0), SceneParams{config.mode, SceneBox::default_box(), "exact"});
     Point lo, hi;
     for (std::size_t i = 0; i < 3; ++i) {
       lo[i] = to_mpq(exact.leaves().front().frame_box().lo[i]).get_d();
       hi[i] = to_mpq(exact.leaves().front().frame_box().hi[i]).get_d();
     }
     const auto exact_value = [&](float x, float y, float z) { return exact.evaluate<float>(Vec3<float>{x, y, z}); };
-    const TraceStatistics exact_traced = trace_rays(lo, hi, config.rays, exact_value, [](const TracePoint&) { return 0.0; });
+    const TraceStatistics exact_traced =
+        trace_rays(lo, hi, config.rays, exact_value, [](const TracePoint&) { return 0.0; });
     for (double tolerance : config.tolerances) {
       const std::string eps = tolerance == 0 ? "exact" : format("%.0e", tolerance);
       try {
@@ -315,9 +324,8 @@ int run(const Config& config) {
         if (r.reported > 0 && r.patch_to_surface > r.reported) status = 1;
         table.push_back({surface.name, eps, r.degree_pieces, r.terms, std::to_string(r.glsl_lines),
                          format("%.0f", r.ns), format("%.1f", r.steps), r.bound,
-                         format("%.2g", r.patch_to_surface) + (r.unconverged ? " (" + std::to_string(r.unconverged) +
-                                                                                  " no zero)"
-                                                                            : ""),
+                         format("%.2g", r.patch_to_surface) +
+                             (r.unconverged ? " (" + std::to_string(r.unconverged) + " no zero)" : ""),
                          format("%.2g", r.surface_to_patch), format("%.3f", r.iou)});
       } catch (const ToleranceNotMet& e) {
         table.push_back({surface.name, eps, "tolerance_not_met: best " + format("%.2g", e.best())});
