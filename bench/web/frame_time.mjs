@@ -9,8 +9,9 @@
 // tests' set-up, tests/web/harness.mjs); printed: GLSL lines, the shader's compile and
 // link time, and the time of one full frame (draw + readPixels, which waits for it),
 // the best of --frames frames. The requests ask for a 60 s budget (timeout_ms): the
-// approximation of tp_33 at 1e-3 takes about the default 10 s on a loaded machine. Only ratios within one run mean anything: SwiftShader
-// runs on the machine's cores, shared with whatever else runs.
+// approximation of tp_33 at 1e-3 takes about the default 10 s on a loaded machine.
+// Only ratios within one run mean anything: SwiftShader runs on the machine's cores,
+// shared with whatever else runs.
 //
 //   node bench/web/frame_time.mjs [--surface tp_33] [--tolerance 0,1e-3] [--size 128] [--frames 2]
 //   (from the repository root, after the build and tests/web's npm ci)
