@@ -490,6 +490,10 @@ void PatchCover::copy_boxes_to_double() {
   double_.hi = to_double(float_.hi);
   double_.cluster_lo = to_double(float_.cluster_lo);
   double_.cluster_hi = to_double(float_.cluster_hi);
+  float_.hull_lo = lo();
+  float_.hull_hi = hi();
+  double_.hull_lo = {float_.hull_lo.x, float_.hull_lo.y, float_.hull_lo.z};
+  double_.hull_hi = {float_.hull_hi.x, float_.hull_hi.y, float_.hull_hi.z};
   float_.shrink = 1.0f - 0x1p-17f;
   double_.shrink = 1.0 - 0x1p-46;
 }
@@ -504,6 +508,20 @@ Vec3<float> PatchCover::hi() const {
   Vec3<float> out = float_.cluster_hi.front();
   for (const auto& p : float_.cluster_hi) out = {std::max(out.x, p.x), std::max(out.y, p.y), std::max(out.z, p.z)};
   return out;
+}
+
+namespace {
+
+std::string vec3_literal(const Vec3<float>& v);
+
+}  // namespace
+
+std::string PatchCover::hull_glsl(const std::string& p) const {
+  // squared_distance's steps: the larger overshoot per axis, clamped to [0, kClamp].
+  const std::string q = "min(max(max(" + vec3_literal(float_.hull_lo) + " - " + p + ", " + p + " - " +
+                        vec3_literal(float_.hull_hi) + "), 0.0), " + format_glsl_float(float(kClamp)) + ")";
+  return "sqrt(dot(" + q + ", " + q + ")) * " +
+         format_glsl_float(static_cast<float>(float_.shrink * static_cast<float>(kHullShrink)));
 }
 
 namespace {

@@ -376,11 +376,14 @@ std::string emit_leaf(SceneGlslWriter& w, const CompiledNode& n, const std::stri
   const PolynomialLeaf& leaf = w.leaf(n);
   const std::string id = "leaf" + std::to_string(n.leaf);
   if (leaf.piece_count() == 1) return emit_piece(w, leaf, id, 0, n, p);
-  // The union of the pieces' sheets, in evaluate()'s order (min is exact in float).
-  std::string value = emit_piece(w, leaf, id + "_piece0", 0, n, p);
+  // The union of the pieces' sheets, in evaluate()'s order (min is exact in float),
+  // each piece skipped when its cover's hull is no nearer than the union so far.
+  const std::string value =
+      w.value(emit_piece(w, leaf, id + "_piece0", 0, n, p), "the union of the approximation's pieces");
   for (std::size_t k = 1; k < leaf.piece_count(); ++k) {
+    w.statement("  if (" + leaf.cover(k)->hull_glsl(p) + " < " + value + ") {\n");
     const std::string t = emit_piece(w, leaf, id + "_piece" + std::to_string(k), k, n, p);
-    value = w.value("min(" + value + ", " + t + ")", "the union of the approximation's pieces");
+    w.statement("  " + value + " = min(" + value + ", " + t + ");\n  }\n");
   }
   return value;
 }

@@ -119,6 +119,23 @@ class PatchCover {
     return std::max(ad, std::sqrt(best) * b.shrink);
   }
 
+  /// A lower bound of distance_lower_bound(p, d) for every d: the distance to the box
+  /// around all leaf boxes (lo(), hi()), by the same steps, shrunk by a further
+  /// kHullShrink. Each leaf box lies in that box, so every rounded step of the walk is
+  /// at least the hull's (correctly rounded operations are monotone); the extra factor
+  /// covers a GPU's own freedoms (a fused multiply-add). What lets a union of covered
+  /// pieces skip a piece whose hull is no nearer than the best value so far.
+  template <typename T>
+  T hull_distance_lower_bound(const Vec3<T>& p) const {
+    const Boxes<T>& b = boxes<T>();
+    return std::sqrt(squared_distance(p, b.hull_lo, b.hull_hi)) * (b.shrink * T(kHullShrink));
+  }
+  /// The GLSL expression of hull_distance_lower_bound<float>(`p`), `p` a vec3 expression
+  /// without side effects.
+  std::string hull_glsl(const std::string& p) const;
+  /// The further factor of hull_distance_lower_bound().
+  static constexpr double kHullShrink = 1.0 - 0x1p-16;
+
   /// `float FUNCTION(vec3 p, float d)` with its constant arrays FUNCTION_lo, …,
   /// computing distance_lower_bound<float>. Precondition: FUNCTION is a valid GLSL
   /// identifier.
@@ -150,6 +167,7 @@ class PatchCover {
   struct Boxes {
     std::vector<Vec3<T>> lo, hi;                  // cluster_size_ per cluster
     std::vector<Vec3<T>> cluster_lo, cluster_hi;  // one per cluster
+    Vec3<T> hull_lo{}, hull_hi{};                 // the box around every leaf box
     T shrink = 1;
   };
 

@@ -99,11 +99,16 @@ class PolynomialLeaf {
                               SdfMode mode, const Budget& budget, const std::string& field, int dimension = 3);
 
   /// The leaf's value at p: d (untrimmed, signed), the trimmed sheet, or the min of
-  /// the pieces' trimmed sheets (an approximation).
+  /// the pieces' trimmed sheets (an approximation). A piece whose cover's hull is no
+  /// nearer than the min so far is skipped: its value is at least that distance
+  /// (PatchCover::hull_distance_lower_bound), so the min is the same, and a point
+  /// meets the polynomials of the pieces near it only (the GLSL does the same).
   template <typename T>
   T evaluate(const Vec3<T>& p) const {
     T value = pieces_.front().evaluate(p);
-    for (std::size_t k = 1; k < pieces_.size(); ++k) value = std::min(value, pieces_[k].evaluate(p));
+    for (std::size_t k = 1; k < pieces_.size(); ++k) {
+      if (pieces_[k].cover->hull_distance_lower_bound(p) < value) value = std::min(value, pieces_[k].evaluate(p));
+    }
     return value;
   }
 
