@@ -57,8 +57,8 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: implicitizer-approximation-trade [--surface NAME[,NAME...]] [--tolerance EPS[,EPS...]]\n"
-    "                                        [--points N] [--rays R] [--samples S] [--mode fast|safe]\n                "
-    "                        [--markdown]\n"
+    "                                        [--points N] [--rays R] [--samples S] [--mode fast|safe]\n"
+    "                                        [--markdown]\n"
     "\n"
     "The trade between exact and approximate implicitization of patches on [0,1]^2:\n"
     "degree x pieces, GLSL lines, ns per fp32 evaluation, sphere-tracing steps, the\n"
@@ -281,27 +281,12 @@ Row measure(const Surface& surface, double tolerance, const PatchSample& wide, c
   return row;
 }
 
-std::vector<Surface> chosen_surfaces(const Config& config) {
-  std::vector<Surface> all =
-      read_surface_suite(std::string(IMPLICITIZER_BENCH_DIR) + "/surfaces_public.json", "public");
-  for (Surface& s : read_surface_suite(std::string(IMPLICITIZER_BENCH_DIR) + "/surfaces_hard.json", "hard")) {
-    all.push_back(std::move(s));
-  }
-  std::vector<Surface> chosen;
-  for (const std::string& name : config.surfaces) {
-    const auto it = std::find_if(all.begin(), all.end(), [&](const Surface& s) { return s.name == name; });
-    if (it == all.end()) throw InputError("invalid_argument", "no surface '" + name + "'").in_field("--surface");
-    chosen.push_back(*it);
-  }
-  return chosen;
-}
-
 int run(const Config& config) {
   std::vector<std::vector<std::string>> table = {{"surface", "EPS", "degree × pieces", "terms", "GLSL lines",
                                                   "ns / eval", "steps / ray", "bound (p→s / s→p)", "measured p→s",
                                                   "measured s→p", "IoU"}};
   int status = 0;
-  for (const Surface& surface : chosen_surfaces(config)) {
+  for (const Surface& surface : read_public_and_hard(IMPLICITIZER_BENCH_DIR, config.surfaces)) {
     std::cerr << "measuring " << surface.name << "...\n";
     const Parametrization parametrization = parse_parametrization(surface.x, surface.y, surface.z);
     const PatchSample sample(parametrization, {0, 1, 0, 1}, config.samples);

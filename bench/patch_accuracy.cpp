@@ -190,20 +190,7 @@ ModeResult measure_mode(const Surface& surface, SdfMode mode, const PatchSample&
 }
 
 int run(const Config& config) {
-  std::vector<Surface> surfaces =
-      read_surface_suite(std::string(IMPLICITIZER_BENCH_DIR) + "/surfaces_public.json", "public");
-  for (Surface& s : read_surface_suite(std::string(IMPLICITIZER_BENCH_DIR) + "/surfaces_hard.json", "hard")) {
-    surfaces.push_back(std::move(s));
-  }
-  if (!config.surfaces.empty()) {
-    std::vector<Surface> chosen;
-    for (const std::string& name : config.surfaces) {
-      const auto it = std::find_if(surfaces.begin(), surfaces.end(), [&](const Surface& s) { return s.name == name; });
-      if (it == surfaces.end()) throw InputError("invalid_argument", "no surface '" + name + "'").in_field("--surface");
-      chosen.push_back(*it);
-    }
-    surfaces = chosen;
-  }
+  const std::vector<Surface> surfaces = read_public_and_hard(IMPLICITIZER_BENCH_DIR, config.surfaces);
   std::vector<std::vector<std::string>> table = {
       {"surface", "mode", "shape", "on patch |v| > 1e-3h", "on patch max |v|/h", "off patch v <= 0.01h", "off min v/h",
        "v < 0", "safe over", "steps patch / solid", "off-patch hits patch / solid", "ns patch / solid"}};

@@ -1,8 +1,11 @@
 #include "surface_suite.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include "implicitizer/core/errors.hpp"
 
 // The benchmark reads data files, not requests: the server's codec has no notion of
 // a suite, so RapidJSON is used directly here, as a private dependency of the bench.
@@ -59,6 +62,20 @@ std::vector<Surface> read_surface_suite(const std::filesystem::path& file, const
     surfaces.push_back(std::move(s));
   }
   return surfaces;
+}
+
+std::vector<Surface> read_public_and_hard(const std::filesystem::path& bench_dir,
+                                          const std::vector<std::string>& names) {
+  std::vector<Surface> all = read_surface_suite(bench_dir / "surfaces_public.json", "public");
+  for (Surface& s : read_surface_suite(bench_dir / "surfaces_hard.json", "hard")) all.push_back(std::move(s));
+  if (names.empty()) return all;
+  std::vector<Surface> chosen;
+  for (const std::string& name : names) {
+    const auto it = std::find_if(all.begin(), all.end(), [&](const Surface& s) { return s.name == name; });
+    if (it == all.end()) throw InputError("invalid_argument", "no surface '" + name + "'").in_field("--surface");
+    chosen.push_back(*it);
+  }
+  return chosen;
 }
 
 }  // namespace implicitizer::bench

@@ -24,4 +24,10 @@ struct Surface {
 /// that shape; members other than those are ignored.
 std::vector<Surface> read_surface_suite(const std::filesystem::path& file, const std::string& suite);
 
+/// The public then the hard surfaces of `bench_dir` (surfaces_public.json,
+/// surfaces_hard.json); with `names`, only those, in that order. An unknown name is
+/// InputError `invalid_argument` at field `--surface` (the benches' flag).
+std::vector<Surface> read_public_and_hard(const std::filesystem::path& bench_dir,
+                                          const std::vector<std::string>& names);
+
 }  // namespace implicitizer::bench
