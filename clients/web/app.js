@@ -428,7 +428,7 @@ function showApproximation(a) {
   const bound = (b) => `${Number(b.bound.toPrecision(2))} (${b.method}${b.method === 'measured' ? ` on ${b.samples} points` : ''})`;
   const size = `degree ${a.degree} × ${a.pieces} piece${a.pieces === 1 ? '' : 's'} · ${a.glsl_lines} GLSL lines`;
   if (a.exact) {
-    ui.approximation.textContent = `Tolerance ${a.tolerance}: the exact equation is kept (${a.reason}) · ${size}`;
+    ui.approximation.textContent = `Tolerance ${a.tolerance}: exact, error 0 — ${a.reason} · ${size}`;
   } else {
     ui.approximation.textContent = `Tolerance ${a.tolerance} of the box diagonal: patch → surface ≤ ${bound(a.patch_to_surface)}, ` +
       `surface → patch ≤ ${bound(a.surface_to_patch)} · ${size}`;

@@ -445,21 +445,18 @@ sys.exit(0 if len(v) == 2 and abs(v[0]) < 1e-6 and v[1] > 0.1 else 1)' "$WORK/ou
   fail "sdf --eval on a parametric curve: 0 on the arc, positive off it"
 fi
 expect_status "sdf curve domain count" 3 "invalid_domain in domain:" sdf --x t --y "t^2" --domain -1,1,0,1
-# --tolerance (issue 19): tp_22 of surfaces_hard.json approximated within 1e-2 of its
-# box's diagonal. Safe mode's values are lower bounds of the distance to the pieces,
-# so at points X(s, t) of the patch they are at most patch_to_surface x diag.
-TP22=(--x "3-t-2*t^2-3*s-5*s*t+5*s^2-s^2*t+4*s^2*t^2" --y "-3+5*t-t^2-s+5*s*t-4*s*t^2+2*s^2+5*s^2*t"
-  --z "-3-3*t-4*t^2-2*s+5*s*t-3*s*t^2+3*s^2+5*s^2*t+2*s^2*t^2" --domain 0,1,0,1)
+# --tolerance (issue 19): Enneper's surface over [0, 1]^2 (exact degree 9) approximated
+# within 1e-2 of its box's diagonal, where one low-degree piece is shorter GLSL than the
+# exact equation. Safe mode's values are lower bounds of the distance to the pieces, so
+# at points X(s, t) of the patch they are at most patch_to_surface x diag.
+ENNEPER=(--x "s-s^3/3+s*t^2" --y "t-t^3/3+s^2*t" --z "s^2-t^2" --domain 0,1,0,1)
 python3 -c '
 for i in range(11):
     for j in range(11):
         s, t = i / 10, j / 10
-        x = 3-t-2*t**2-3*s-5*s*t+5*s**2-s**2*t+4*s**2*t**2
-        y = -3+5*t-t**2-s+5*s*t-4*s*t**2+2*s**2+5*s**2*t
-        z = -3-3*t-4*t**2-2*s+5*s*t-3*s*t**2+3*s**2+5*s**2*t+2*s**2*t**2
-        print("%.17g %.17g %.17g" % (x, y, z))
-print("40 40 40")' >"$WORK/tp22_points.txt"
-run sdf "${TP22[@]}" --tolerance 0.01 --mode safe --eval "$WORK/tp22_points.txt" --json
+        print("%.17g %.17g %.17g" % (s - s**3 / 3 + s * t**2, t - t**3 / 3 + s**2 * t, s**2 - t**2))
+print("40 40 40")' >"$WORK/enneper_points.txt"
+run sdf "${ENNEPER[@]}" --tolerance 0.01 --mode safe --eval "$WORK/enneper_points.txt" --json
 if [[ $(status) == 0 ]] && python3 -c '
 import json, sys
 lines = open(sys.argv[1]).read().splitlines()
@@ -475,6 +472,13 @@ ok = (a["tolerance"] == 0.01 and not a["exact"] and a["pieces"] >= 1 and a["degr
 sys.exit(0 if ok else 1)' "$WORK/out"; then pass; else
   fail "sdf --tolerance --eval: values ~0 on the patch (within the bound), positive far away"
 fi
+# tp_22 of surfaces_hard.json: its exact equation (degree 8) is shorter GLSL than any
+# approximation within 1e-2, so the answer is exact and says why.
+TP22=(--x "3-t-2*t^2-3*s-5*s*t+5*s^2-s^2*t+4*s^2*t^2" --y "-3+5*t-t^2-s+5*s*t-4*s*t^2+2*s^2+5*s^2*t"
+  --z "-3-3*t-4*t^2-2*s+5*s*t-3*s*t^2+3*s^2+5*s^2*t+2*s^2*t^2" --domain 0,1,0,1)
+expect_json "sdf --tolerance keeps a shorter exact equation" 0 \
+  'j["approximation"]["exact"] and j["degree"] == 8 and "shorter" in j["approximation"]["reason"]
+   and j["approximation"]["glsl_lines"] == len(j["glsl"].splitlines())' sdf "${TP22[@]}" --tolerance 0.01 --json
 # The exact answer is unchanged without --tolerance (no "approximation").
 expect_json "sdf without --tolerance is exact" 0 '"approximation" not in j and j["degree"] == 8' sdf "${TP22[@]}" --json
 for bad in 0 -0.001 0.6 nan inf small; do
@@ -482,8 +486,9 @@ for bad in 0 -0.001 0.6 nan inf small; do
 done
 expect_json "sdf --tolerance json error" 3 'j["error"]["code"] == "invalid_tolerance" and j["error"]["field"] == "tolerance"' \
   sdf --implicit "x^2+y^2+z^2-1" --tolerance 0.01 --json
-# A tolerance below double's rounding cannot be met: exit 4, the best bound in the JSON.
-expect_json "sdf --tolerance not met" 4 'j["error"]["code"] == "tolerance_not_met" and 0 < j["error"]["best_bound"] < 1e-6' \
+# No approximation meets a tolerance below double's rounding; the exact equation does.
+expect_json "sdf --tolerance beyond any approximation is exact" 0 \
+  'j["approximation"]["exact"] and j["degree"] == 3 and "exact" in j["approximation"]["reason"]' \
   sdf --x s --y t --z "s*t^2" --domain 0,1,0,1 --tolerance 1e-300 --json
 # A closed surface over the whole plane keeps its exact equation, and says so.
 expect_json "sdf --tolerance on the sphere keeps the exact equation" 0 \

@@ -140,8 +140,14 @@ std::string tp22_request(const std::string& members) {
          members + "}";
 }
 
+// Enneper's surface over [0, 1]^2 with `members`: one low-degree piece is shorter GLSL
+// than its exact equation (degree 9).
+std::string enneper_request(const std::string& members) {
+  return R"({"x": "s-s^3/3+s*t^2", "y": "t-t^3/3+s^2*t", "z": "s^2-t^2", "domain": [0, 1, 0, 1])" + members + "}";
+}
+
 TEST(AnswerSdfRequest, ToleranceAnswersTheApproximationAndItsBounds) {
-  const SdfRequest request = decode_sdf_request(tp22_request(R"(, "tolerance": 0.01)"));
+  const SdfRequest request = decode_sdf_request(enneper_request(R"(, "tolerance": 0.01)"));
   EXPECT_EQ(request.tolerance, 0.01);
   const SdfAnswer answer = answer_sdf_request(request);
   ASSERT_TRUE(answer.approximation);
@@ -164,10 +170,27 @@ TEST(AnswerSdfRequest, ToleranceAnswersTheApproximationAndItsBounds) {
     EXPECT_NE(json.find(R"("method":"measured","samples":)"), std::string::npos) << json;
   }
   // Without a tolerance the answer is the exact one, as before: no "approximation".
-  const SdfAnswer exact = answer_sdf_request(decode_sdf_request(tp22_request("")));
+  const SdfAnswer exact = answer_sdf_request(decode_sdf_request(enneper_request("")));
   EXPECT_FALSE(exact.approximation);
-  EXPECT_EQ(exact.degree, 8);
+  EXPECT_EQ(exact.degree, 9);
   EXPECT_EQ(encode_sdf_response(exact).find("approximation"), std::string::npos);
+  EXPECT_LT(a.glsl_lines, count_lines(exact.glsl));
+}
+
+// tp_22's exact equation (degree 8) is shorter GLSL than any approximation within 1e-2:
+// the answer is exact, with both distances 0, and says why.
+TEST(AnswerSdfRequest, ToleranceKeepsAShorterExactEquation) {
+  const SdfAnswer answer = answer_sdf_request(decode_sdf_request(tp22_request(R"(, "tolerance": 0.01)")));
+  ASSERT_TRUE(answer.approximation);
+  const ApproximationSummary& a = *answer.approximation;
+  EXPECT_NE(a.kept_exact.find("shorter"), std::string::npos) << a.kept_exact;
+  EXPECT_EQ(answer.degree, 8);
+  EXPECT_EQ(a.degree, 8);
+  EXPECT_EQ(a.pieces, 1u);
+  EXPECT_EQ(a.patch_to_surface, 0);
+  EXPECT_EQ(a.glsl_lines, count_lines(answer.glsl));
+  EXPECT_NE(encode_sdf_response(answer).find(R"("approximation":{"tolerance":0.01,"exact":true,"reason":)"),
+            std::string::npos);
 }
 
 TEST(AnswerSdfRequest, ToleranceErrorsNameTheirField) {
@@ -193,13 +216,14 @@ TEST(AnswerSdfRequest, ToleranceErrorsNameTheirField) {
 TEST(AnswerSdfRequest, SceneLeavesReportTheirApproximation) {
   const SdfRequest request = decode_sdf_request(R"({"scene": {"type": "union", "children": [
       {"type": "sphere", "radius": 0.5},
-      {"type": "parametric", "x": "s", "y": "t", "z": "s^3-s*t^2", "domain": [[0, 1], [0, 1]], "tolerance": 0.05}]}})");
+      {"type": "parametric", "x": "s-s^3/3+s*t^2", "y": "t-t^3/3+s^2*t", "z": "s^2-t^2", "domain": [[0, 1], [0, 1]],
+       "tolerance": 0.05}]}})");
   const SdfAnswer answer = answer_sdf_request(request);
   ASSERT_EQ(answer.leaves.size(), 1u);
   ASSERT_TRUE(answer.leaves[0].approximation);
   EXPECT_TRUE(answer.leaves[0].trimmed);
   EXPECT_FALSE(answer.approximation);  // a scene's leaves say their own
-  EXPECT_NE(encode_sdf_response(answer).find(R"("approximation":{"tolerance":0.05,)"), std::string::npos);
+  EXPECT_NE(encode_sdf_response(answer).find(R"("approximation":{"tolerance":0.05,"exact":false,)"), std::string::npos);
 }
 
 }  // namespace

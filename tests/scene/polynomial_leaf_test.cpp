@@ -337,21 +337,40 @@ SceneNode tp22(std::optional<double> tolerance) {
   return node;
 }
 
-V tp22_point(double s, double t) {
-  return {3 - t - 2 * t * t - 3 * s - 5 * s * t + 5 * s * s - s * s * t + 4 * s * s * t * t,
-          -3 + 5 * t - t * t - s + 5 * s * t - 4 * s * t * t + 2 * s * s + 5 * s * s * t,
-          -3 - 3 * t - 4 * t * t - 2 * s + 5 * s * t - 3 * s * t * t + 3 * s * s + 5 * s * s * t + 2 * s * s * t * t};
+// tp_33 of ../shared/bench/surfaces_hard.json (a bicubic patch, exact degree 18): within
+// 1e-2 a few pieces of degree <= 6 are far shorter GLSL than its exact equation.
+SceneNode tp33(std::optional<double> tolerance) {
+  SceneNode node = parametric(
+      "3+2*t^2+t^3-3*s-5*s*t+s^2-2*s^2*t-3*s^2*t^2-3*s^2*t^3+4*s^3-3*s^3*t+3*s^3*t^2-s^3*t^3",
+      "3+t-2*t^2-4*t^3-3*s+s*t+5*s*t^2+2*s*t^3+4*s^2-s^2*t-5*s^2*t^2+s^2*t^3-5*s^3-3*s^3*t-5*s^3*t^2+3*s^3*t^3",
+      "-2-2*t-4*t^2-5*t^3+3*s-3*s*t-4*s*t^2-4*s*t^3-s^2+3*s^2*t-3*s^2*t^2-2*s^2*t^3+3*s^3+5*s^3*t-2*s^3*t^2+2*s^3*t^3",
+      unit_square());
+  node.leaf.tolerance = tolerance;
+  return node;
+}
+
+std::size_t count_lines(const std::string& text) { return std::size_t(std::count(text.begin(), text.end(), '\n')); }
+
+V tp33_point(double s, double t) {
+  const double s2 = s * s, s3 = s2 * s, t2 = t * t, t3 = t2 * t;
+  return {3 + 2 * t2 + t3 - 3 * s - 5 * s * t + s2 - 2 * s2 * t - 3 * s2 * t2 - 3 * s2 * t3 + 4 * s3 - 3 * s3 * t +
+              3 * s3 * t2 - s3 * t3,
+          3 + t - 2 * t2 - 4 * t3 - 3 * s + s * t + 5 * s * t2 + 2 * s * t3 + 4 * s2 - s2 * t - 5 * s2 * t2 + s2 * t3 -
+              5 * s3 - 3 * s3 * t - 5 * s3 * t2 + 3 * s3 * t3,
+          -2 - 2 * t - 4 * t2 - 5 * t3 + 3 * s - 3 * s * t - 4 * s * t2 - 4 * s * t3 - s2 + 3 * s2 * t - 3 * s2 * t2 -
+              2 * s2 * t3 + 3 * s3 + 5 * s3 * t - 2 * s3 * t2 + 2 * s3 * t3};
 }
 
 TEST(PolynomialLeaf, ApproximatedPatchIsWithinItsBoundOnThePatch) {
   // Safe mode: each piece's value is a lower bound of the distance to its surface,
   // which is within patch_to_surface·diag of every point of its part of the patch.
   const double eps = 1e-2;
-  const CompiledScene scene = testing::compile(tp22(eps), SdfMode::safe);
+  const CompiledScene scene = testing::compile(tp33(eps), SdfMode::safe);
   const PolynomialLeaf& leaf = scene.leaves().front();
   const PatchApproximation* a = leaf.approximation();
   ASSERT_NE(a, nullptr);
   EXPECT_EQ(leaf.piece_count(), a->pieces.size());
+  EXPECT_GT(leaf.piece_count(), 1u);
   EXPECT_TRUE(leaf.trimmed());
   EXPECT_EQ(leaf.shape(), SdfShape::sheet);
   EXPECT_EQ(leaf.tolerance(), eps);
@@ -360,7 +379,7 @@ TEST(PolynomialLeaf, ApproximatedPatchIsWithinItsBoundOnThePatch) {
   EXPECT_GT(a->diagonal, 0);
   double worst = 0;
   for (int i = 0; i <= 40; ++i) {
-    for (int j = 0; j <= 40; ++j) worst = std::max(worst, scene.evaluate(tp22_point(i / 40.0, j / 40.0)));
+    for (int j = 0; j <= 40; ++j) worst = std::max(worst, scene.evaluate(tp33_point(i / 40.0, j / 40.0)));
   }
   EXPECT_LE(worst, a->patch_to_surface * a->diagonal * (1 + 1e-6) + 1e-9 * a->diagonal);
   // Outside the patch's box widened by 0.2·diag every piece's cover is farther than that.
@@ -373,7 +392,7 @@ TEST(PolynomialLeaf, ApproximatedPatchIsWithinItsBoundOnThePatch) {
 }
 
 TEST(PolynomialLeaf, ApproximatedPatchGlslRunsOnLlvmpipe) {
-  const CompiledScene scene = testing::compile(tp22(1e-2));
+  const CompiledScene scene = testing::compile(tp33(1e-2));
   const PolynomialLeaf& leaf = scene.leaves().front();
   ASSERT_NE(leaf.approximation(), nullptr);
   EXPECT_EQ(testing::glslang_both(scene), "");
@@ -389,7 +408,7 @@ TEST(PolynomialLeaf, ApproximatedPatchGlslRunsOnLlvmpipe) {
   std::vector<Vec3<float>> points;
   for (int i = 0; i <= 12; ++i) {
     for (int j = 0; j <= 12; ++j) {
-      const V p = tp22_point(i / 12.0, j / 12.0);
+      const V p = tp33_point(i / 12.0, j / 12.0);
       points.push_back({static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
     }
   }
@@ -399,8 +418,48 @@ TEST(PolynomialLeaf, ApproximatedPatchGlslRunsOnLlvmpipe) {
   ASSERT_EQ(r.error, "");
   for (float v : r.gpu) EXPECT_GE(v, 0.0f);
   EXPECT_LE(r.worst_scaled, 64);
-  std::cout << "tp_22 at 1e-2: " << leaf.piece_count() << " pieces, " << r.points << " points, " << r.identical
+  std::cout << "tp_33 at 1e-2: " << leaf.piece_count() << " pieces, " << r.points << " points, " << r.identical
             << " bit-identical, worst " << r.worst_scaled << " x 2^-24 x scale\n";
+}
+
+// A tolerance the exact equation answers more cheaply: tp_22's degree-8 equation is
+// shorter GLSL than any approximation within 1e-2, so the leaf is exact and says why;
+// and no approximation meets 1e-300, which the exact equation does.
+TEST(PolynomialLeaf, ToleranceKeepsTheExactEquationWhenItsGlslIsShorter) {
+  const CompiledScene scene = testing::compile(tp22(1e-2));
+  const PolynomialLeaf& leaf = scene.leaves().front();
+  EXPECT_EQ(leaf.approximation(), nullptr);
+  EXPECT_EQ(leaf.equation().total_degree(), 8);
+  EXPECT_EQ(leaf.piece_count(), 1u);
+  EXPECT_TRUE(leaf.trimmed());
+  EXPECT_NE(leaf.tolerance_kept_exact().find("shorter"), std::string::npos) << leaf.tolerance_kept_exact();
+  EXPECT_EQ(leaf.glsl_lines(), testing::compile(tp22(std::nullopt)).leaves().front().glsl_lines());
+  SceneNode tight = parametric("s", "t", "s*t^2", unit_square());
+  tight.leaf.tolerance = 1e-300;
+  const CompiledScene exact = testing::compile(tight);
+  EXPECT_EQ(exact.leaves().front().approximation(), nullptr);
+  EXPECT_EQ(exact.leaves().front().equation().total_degree(), 3);
+  EXPECT_NEAR(exact.evaluate(V{0.5, 0.5, 0.125}), 0, 1e-9);
+}
+
+// The approximation's early stop relies on every piece taking more lines than
+// kMinPieceGlslLines; the smallest piece is a plane's, trimmed, in either mode.
+TEST(PolynomialLeaf, EveryPieceTakesMoreThanTheMinimumLines) {
+  for (SdfMode mode : {SdfMode::fast, SdfMode::safe}) {
+    const CompiledScene plane = testing::compile(parametric("s", "t", "s+t", unit_square()), mode);
+    ASSERT_TRUE(plane.leaves().front().trimmed());
+    EXPECT_GT(plane.leaves().front().glsl_lines(), PolynomialLeaf::kMinPieceGlslLines);
+  }
+}
+
+// Where the approximation is kept its GLSL is the shorter.
+TEST(PolynomialLeaf, AKeptApproximationIsShorterThanTheExactEquation) {
+  const CompiledScene approximated = testing::compile(tp33(1e-2));
+  const CompiledScene exact = testing::compile(tp33(std::nullopt));
+  ASSERT_NE(approximated.leaves().front().approximation(), nullptr);
+  EXPECT_EQ(approximated.leaves().front().tolerance_kept_exact(), "");
+  EXPECT_LT(approximated.leaves().front().glsl_lines(), exact.leaves().front().glsl_lines());
+  EXPECT_LT(count_lines(approximated.to_glsl()), count_lines(exact.to_glsl()));
 }
 
 TEST(PolynomialLeaf, ClosedSurfaceWithAToleranceKeepsItsExactEquation) {

@@ -245,6 +245,9 @@ PatchApproximation approximate_patch(const Parametrization& parametrization, con
   double worst_accepted = 0;
   while (!pending.empty()) {
     budget.check(kWhere);
+    if (params.keep_going && !params.keep_going(accepted, pending.size())) {
+      throw ApproximationStopped("the approximation was stopped after " + std::to_string(accepted.size()) + " pieces");
+    }
     const ParameterDomain piece = pending.back();
     pending.pop_back();
     PieceResult r = approximate_piece(ctx, piece);

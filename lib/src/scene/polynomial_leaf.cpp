@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
@@ -92,8 +93,6 @@ Polynomial into_space(const Polynomial& curve) {
 
 LeafEquation implicitize_leaf(const PolynomialLeafSource& source, const Budget& budget, const std::string& field,
                               int dimension) {
-  // A tolerance over a bounded domain approximates instead (PolynomialLeaf::build):
-  // the exact equation, the expensive part, is not computed.
   LeafEquation out;
   Parametrization parametrization;
   if (dimension == 2 && !source.coordinates[2].empty()) {
@@ -111,7 +110,6 @@ LeafEquation implicitize_leaf(const PolynomialLeafSource& source, const Budget& 
   } catch (const InputError& e) {
     throw at_field(e, field, "domain");
   }
-  if (source.tolerance && out.patch->domain) return out;
   ImplicitizeParams params;
   params.budget = budget;
   try {
@@ -140,7 +138,6 @@ LeafEquation leaf_equation(NodeKind kind, const PolynomialLeafSource& source, co
   } else {
     out = implicitize_leaf(source, budget, field, dimension);
   }
-  if (out.patch && source.tolerance && out.patch->domain) return out;  // approximated: no F
   if (out.f.is_constant()) {
     throw InputError("constant_polynomial", "a constant polynomial has no surface")
         .in_field(field + (kind == NodeKind::implicit ? ".equation" : ""));
@@ -236,80 +233,170 @@ PolynomialLeaf PolynomialLeaf::build(NodeKind kind, const PolynomialLeafSource& 
   // up to its closure, all of its algebraic surface in the fitted box (docs/sdf.md,
   // "Patches"), which the frame clips as for an implicit leaf.
   const bool bounded_patch = equation.patch && equation.patch->domain;
-  if (bounded_patch && source.tolerance) {
-    ApproximationParams params;
-    params.tolerance = *source.tolerance;
-    PatchApproximation approximation;
-    try {
-      approximation = approximate_patch(equation.patch->parametrization, *equation.patch->domain, params, budget);
-    } catch (const InputError& e) {
-      throw at_field(e, field, e.code() == "invalid_tolerance" ? "tolerance" : "x");
-    }
-    PolynomialLeaf leaf =
-        build_approximated(std::move(approximation), equation.patch->parametrization, frame_box, mode, budget, field);
+  const ExactSource exact{kind,
+                          source,
+                          equation.f,
+                          frame_box,
+                          bounded_patch ? &equation.patch->parametrization : nullptr,
+                          bounded_patch ? &*equation.patch->domain : nullptr,
+                          dimension};
+  if (!bounded_patch || !source.tolerance) {
+    PolynomialLeaf leaf = build_exact(exact, mode, budget, field);
     leaf.tolerance_ = source.tolerance;
+    if (source.tolerance) {
+      leaf.kept_exact_ =
+          "a closed surface over the whole parameter plane keeps its exact equation (its degree is already low)";
+    }
     return leaf;
   }
-  PolynomialLeaf leaf(equation.f);
-  leaf.tolerance_ = source.tolerance;
-  if (source.tolerance) {
-    leaf.kept_exact_ =
-        "a closed surface over the whole parameter plane keeps its exact equation (its degree is already low)";
+  // A tolerance: the exact equation meets every one, so the approximation is kept only
+  // where its GLSL is shorter. Safe mode may have no exact leaf (degree_too_high).
+  std::optional<PolynomialLeaf> exact_leaf;
+  std::string no_exact;
+  try {
+    exact_leaf = build_exact(exact, mode, budget, field);
+  } catch (const InputError& e) {
+    if (e.code() != "degree_too_high") throw;
+    no_exact = e.what();
   }
+  PolynomialLeaf leaf = build_cheapest(std::move(exact_leaf), no_exact, equation.patch->parametrization,
+                                       *equation.patch->domain, frame_box, *source.tolerance, mode, budget, field);
+  leaf.tolerance_ = source.tolerance;
+  return leaf;
+}
+
+PolynomialLeaf PolynomialLeaf::build_exact(const ExactSource& in, SdfMode mode, const Budget& budget,
+                                           const std::string& field) {
+  PolynomialLeaf leaf(in.f);
   Enclosure shape;
   Piece piece;
   try {
-    shape = resolve_shape(source, equation.f, frame_box, bounded_patch, dimension, budget);
-    const Polynomial f = shape.negate ? -equation.f : equation.f;
+    shape = resolve_shape(in.source, in.f, in.frame_box, in.domain != nullptr, in.dimension, budget);
+    const Polynomial f = shape.negate ? -in.f : in.f;
     if (mode == SdfMode::safe) {
-      piece.safe = SafeSdf::build(f, frame_box, budget, shape.shape);
+      piece.safe = SafeSdf::build(f, in.frame_box, budget, shape.shape);
     } else {
-      piece.fast = FastSdf::build(f, frame_box, budget, shape.shape);
+      piece.fast = FastSdf::build(f, in.frame_box, budget, shape.shape);
     }
   } catch (const InputError& e) {
     // invalid_box concerns the box; degree_too_high the equation.
-    throw at_field(e, field, e.code() == "invalid_box" ? "box" : (kind == NodeKind::implicit ? "equation" : ""));
+    throw at_field(e, field, e.code() == "invalid_box" ? "box" : (in.kind == NodeKind::implicit ? "equation" : ""));
   }
-  leaf.frame_box_ = frame_box;
+  leaf.frame_box_ = in.frame_box;
   leaf.shape_ = shape.shape;
   leaf.shape_reason_ = shape.reason;
   leaf.negated_ = shape.negate;
   // A solid asked of a patch is the solid F <= 0 in its box: nothing to trim.
-  if (bounded_patch && shape.shape == SdfShape::sheet) {
-    piece.cover =
-        PatchCover::build(equation.patch->parametrization, *equation.patch->domain, equation.f, frame_box, budget);
+  if (in.domain && shape.shape == SdfShape::sheet) {
+    piece.cover = PatchCover::build(*in.parametrization, *in.domain, in.f, in.frame_box, budget);
   }
   leaf.pieces_.push_back(std::move(piece));
   return leaf;
 }
 
-PolynomialLeaf PolynomialLeaf::build_approximated(PatchApproximation approximation,
-                                                  const Parametrization& parametrization, const SceneBox& frame_box,
-                                                  SdfMode mode, const Budget& budget, const std::string& field) {
-  PolynomialLeaf leaf(approximation.pieces.front().equation);
+namespace {
+
+std::size_t count_lines(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+std::string count_of(std::size_t n, const std::string& noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
+std::string approximation_size(const PatchApproximation& a, std::size_t lines) {
+  return count_of(a.pieces.size(), "piece") + " of degree at most " + std::to_string(a.max_degree) + ", " +
+         count_of(lines, "line");
+}
+
+}  // namespace
+
+std::size_t PolynomialLeaf::piece_glsl_lines(std::size_t k) const {
+  // Beyond the first, a piece is also its culling test and its min (emit_leaf).
+  std::size_t lines = count_lines(to_glsl("f", k)) + (k > 0 ? 5 : 0);
+  if (pieces_[k].cover) lines += count_lines(pieces_[k].cover->to_glsl("c"));
+  return lines;
+}
+
+std::size_t PolynomialLeaf::glsl_lines() const {
+  std::size_t lines = 0;
+  for (std::size_t k = 0; k < pieces_.size(); ++k) lines += piece_glsl_lines(k);
+  return lines;
+}
+
+PolynomialLeaf PolynomialLeaf::build_cheapest(std::optional<PolynomialLeaf> exact, const std::string& no_exact,
+                                              const Parametrization& parametrization, const ParameterDomain& domain,
+                                              const SceneBox& frame_box, double tolerance, SdfMode mode,
+                                              const Budget& budget, const std::string& field) {
+  const std::size_t exact_lines = exact ? exact->glsl_lines() : std::numeric_limits<std::size_t>::max();
+  // The pieces are compiled as they are accepted, so the approximation stops as soon
+  // as what it has plus a lower bound for what is left reaches the exact equation.
+  PolynomialLeaf leaf{Polynomial(space_ring())};
+  std::size_t lines = 0;
+  const auto compile_accepted = [&](const std::vector<ApproximationPiece>& accepted) {
+    while (leaf.pieces_.size() < accepted.size()) {
+      leaf.pieces_.push_back(build_piece(accepted[leaf.pieces_.size()], parametrization, mode, budget, field));
+      lines += leaf.piece_glsl_lines(leaf.pieces_.size() - 1);
+    }
+  };
+  ApproximationParams params;
+  params.tolerance = tolerance;
+  params.keep_going = [&](const std::vector<ApproximationPiece>& accepted, std::size_t pending) {
+    compile_accepted(accepted);
+    return lines + pending * kMinPieceGlslLines < exact_lines;
+  };
+  const auto keep_exact = [&](const std::string& why) {
+    exact->kept_exact_ = why;
+    return std::move(*exact);
+  };
+  PatchApproximation approximation;
+  try {
+    approximation = approximate_patch(parametrization, domain, params, budget);
+  } catch (const InputError& e) {
+    throw at_field(e, field, e.code() == "invalid_tolerance" ? "tolerance" : "x");
+  } catch (const ApproximationStopped&) {
+    return keep_exact("the exact equation's GLSL (" + count_of(exact_lines, "line") +
+                      ") is shorter than any approximation's: the pieces accepted so far (" +
+                      std::to_string(leaf.pieces_.size()) + ") take " + count_of(lines, "line") +
+                      ", and the rest of the domain needs more");
+  } catch (const ToleranceNotMet& e) {
+    if (!exact) throw ToleranceNotMet(std::string(e.what()) + "; and the exact equation: " + no_exact, e.best());
+    std::ostringstream why;
+    why << "no approximation meets the tolerance (" << e.what() << "); the exact equation does";
+    return keep_exact(why.str());
+  }
+  compile_accepted(approximation.pieces);
+  if (lines >= exact_lines) {
+    return keep_exact("the exact equation's GLSL (" + count_of(exact_lines, "line") +
+                      ") is no longer than the approximation's (" + approximation_size(approximation, lines) + ")");
+  }
+  leaf.equation_ = approximation.pieces.front().equation;
   leaf.frame_box_ = frame_box;
   leaf.shape_ = SdfShape::sheet;
   leaf.shape_reason_ = "an approximated patch is a sheet";
-  for (const ApproximationPiece& source : approximation.pieces) {
-    budget.check("approximated leaf");
-    // Each piece in the box fitted to X(S_k), as a patch's frame is to X(D): its own
-    // scale, so its fp32 evaluation is as accurate as a whole patch's.
-    const SceneBox box = fitted_box(source.box, field);
-    Piece piece;
-    try {
-      if (mode == SdfMode::safe) {
-        piece.safe = SafeSdf::build(source.equation, box, budget, SdfShape::sheet);
-      } else {
-        piece.fast = FastSdf::build(source.equation, box, budget, SdfShape::sheet);
-      }
-    } catch (const InputError& e) {
-      throw at_field(e, field, e.code() == "invalid_box" ? "box" : "");
-    }
-    piece.cover = PatchCover::build(parametrization, source.domain, source.equation, box, budget);
-    leaf.pieces_.push_back(std::move(piece));
-  }
   leaf.approximation_ = std::move(approximation);
   return leaf;
+}
+
+PolynomialLeaf::Piece PolynomialLeaf::build_piece(const ApproximationPiece& source,
+                                                  const Parametrization& parametrization, SdfMode mode,
+                                                  const Budget& budget, const std::string& field) {
+  budget.check("approximated leaf");
+  // Each piece in the box fitted to X(S_k), as a patch's frame is to X(D): its own
+  // scale, so its fp32 evaluation is as accurate as a whole patch's.
+  const SceneBox box = fitted_box(source.box, field);
+  Piece piece;
+  try {
+    if (mode == SdfMode::safe) {
+      piece.safe = SafeSdf::build(source.equation, box, budget, SdfShape::sheet);
+    } else {
+      piece.fast = FastSdf::build(source.equation, box, budget, SdfShape::sheet);
+    }
+  } catch (const InputError& e) {
+    throw at_field(e, field, e.code() == "invalid_box" ? "box" : "");
+  }
+  piece.cover = PatchCover::build(parametrization, source.domain, source.equation, box, budget);
+  return piece;
 }
 
 Vec3<float> PolynomialLeaf::trim_corner(bool upper) const {

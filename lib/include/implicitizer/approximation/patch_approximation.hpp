@@ -14,6 +14,8 @@
 /// bound the values; ||D b|| = σ for ||b|| = 1). The SVD is Eigen's.
 
 #include <cstddef>
+#include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,13 +35,20 @@ enum class BoundMethod {
 /// "certified" or "measured" (the API's spelling).
 std::string to_string(BoundMethod method);
 
+struct ApproximationPiece;
+
 /// What approximate_patch() may spend.
 struct ApproximationParams {
   /// EPS: both one-sided distances must stay within EPS · (the diagonal of the patch's
   /// exact box, bound_patch() of D). 0 < EPS <= 0.5.
   double tolerance = 1e-3;
-  int max_degree = 6;            ///< algebraic degrees 1 … max_degree are tried per piece
-  std::size_t max_pieces = 64;   ///< subdivision of D stops here (tolerance_not_met beyond)
+  int max_degree = 6;           ///< algebraic degrees 1 … max_degree are tried per piece
+  std::size_t max_pieces = 64;  ///< subdivision of D stops here (tolerance_not_met beyond)
+  /// Asked before each sub-domain is tried, with the pieces accepted so far (in domain
+  /// order) and the number of sub-domains still to do (each will give at least one
+  /// piece); false stops the approximation with ApproximationStopped. The scene stops
+  /// it once the pieces cannot end up cheaper than the exact equation. Empty: never.
+  std::function<bool(const std::vector<ApproximationPiece>& accepted, std::size_t pending)> keep_going;
 };
 
 /// One piece: the surface q = 0 standing for X(S).
@@ -64,14 +73,14 @@ struct ApproximationPiece {
 /// The result: pieces and the bounds relative to the patch box's diagonal.
 struct PatchApproximation {
   std::vector<ApproximationPiece> pieces;
-  double diagonal = 0;          ///< of the exact box of X(D)
-  double tolerance = 0;         ///< EPS asked
-  double patch_to_surface = 0;  ///< max over pieces / diagonal
+  double diagonal = 0;                                           ///< of the exact box of X(D)
+  double tolerance = 0;                                          ///< EPS asked
+  double patch_to_surface = 0;                                   ///< max over pieces / diagonal
   BoundMethod patch_to_surface_method = BoundMethod::certified;  ///< measured if any piece's is
-  double surface_to_patch = 0;  ///< max over pieces / diagonal
+  double surface_to_patch = 0;                                   ///< max over pieces / diagonal
   BoundMethod surface_to_patch_method = BoundMethod::measured;
   std::size_t surface_to_patch_samples = 0;  ///< sum over pieces
-  int max_degree = 0;           ///< largest piece degree
+  int max_degree = 0;                        ///< largest piece degree
 };
 
 /// Approximates the patch X(`domain`) (a surface: three coordinates, two parameters;
@@ -80,9 +89,16 @@ struct PatchApproximation {
 /// (longest parameter side) and recurses. Cheapest: fewest coefficients in total.
 /// Throws InputError `invalid_tolerance` (field "tolerance") for EPS <= 0, > 0.5 or
 /// non-finite; ToleranceNotMet when max_pieces or max_degree cannot reach it;
+/// ApproximationStopped when params.keep_going says so;
 /// LimitExceeded from `budget` (checked in every phase).
 PatchApproximation approximate_patch(const Parametrization& parametrization, const ParameterDomain& domain,
                                      const ApproximationParams& params, const Budget& budget = Budget());
+
+/// ApproximationParams::keep_going said stop.
+class ApproximationStopped : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 /// The tolerance could not be met: `best` is the smallest two-sided bound reached
 /// (relative to the diagonal). Maps to the stable code `tolerance_not_met`.

@@ -40,19 +40,25 @@
 /// "Patches").
 ///
 /// Approximated patches (a tolerance EPS, issue 19). A parametric leaf over a bounded
-/// domain with source.tolerance is not implicitized: approximate_patch()
-/// (approximation/patch_approximation.hpp) gives pieces q_k = 0 over sub-domains S_k,
-/// and the leaf is their union, min_k t_k(p), each t_k the trimmed sheet above for
-/// q_k in its own frame box (the exact box of X(S_k) padded as a patch's) and its own
-/// cover of X(S_k). Each t_k is >= 0, so the min is the union of the sheets. In safe
-/// mode each t_k is a lower bound of the distance to {q_k = 0} inside X(S_k)'s cover,
-/// so the min is one of the distance to the union of those trimmed zero sets; that
-/// union is within EPS·diag of X(D) both ways (approximation() reports the two bounds
-/// and how they were established), which is the error against the true patch. An
-/// approximation is a sheet: asking it for a solid is InputError `invalid_tolerance`
-/// (an approximating surface's inside says nothing about the patch). Over the whole
-/// parameter plane (closed surfaces: sphere, torus, Steiner's surface) the leaf keeps
-/// its exact equation, whose degree is already low, and tolerance_kept_exact() says so.
+/// domain with source.tolerance is the cheaper of two representations, both within
+/// EPS·diag of X(D): its exact equation (the trimmed sheet above, error 0), and the
+/// approximation of approximate_patch() (approximation/patch_approximation.hpp):
+/// pieces q_k = 0 over sub-domains S_k, the leaf their union, min_k t_k(p), each t_k
+/// the trimmed sheet above for q_k in its own frame box (the exact box of X(S_k)
+/// padded as a patch's) and its own cover of X(S_k). Each t_k is >= 0, so the min is
+/// the union of the sheets. In safe mode each t_k is a lower bound of the distance to
+/// {q_k = 0} inside X(S_k)'s cover, so the min is one of the distance to the union of
+/// those trimmed zero sets; that union is within EPS·diag of X(D) both ways
+/// (approximation() reports the two bounds and how they were established), which is
+/// the error against the true patch. Cheaper means fewer GLSL lines (glsl_lines(): what
+/// a scene embeds and a shader compiler digests); the approximation stops as soon as it
+/// cannot win, and where the exact equation wins, or no approximation meets EPS within
+/// ApproximationParams' limits, the leaf is exact and tolerance_kept_exact() says why.
+/// ToleranceNotMet only when neither exists (safe mode refusing the exact equation as
+/// degree_too_high). An approximation is a sheet: asking it for a solid is InputError
+/// `invalid_tolerance` (an approximating surface's inside says nothing about the
+/// patch). Over the whole parameter plane (closed surfaces: sphere, torus, Steiner's
+/// surface) the leaf keeps its exact equation, whose degree is already low.
 
 #include <algorithm>
 #include <array>
@@ -81,7 +87,7 @@ class PolynomialLeaf {
  public:
   /// Builds the leaf of `source` (kind implicit or parametric; see scene_node.hpp)
   /// under `budget`: parses (ring x, y, z), implicitizes (parametric) or approximates
-  /// (parametric with a tolerance over a bounded domain), bounds the patch over its
+  /// too (parametric with a tolerance over a bounded domain), bounds the patch over its
   /// domain (parametric), compiles the distance of `mode` in the leaf's box
   /// (source.box, else, parametric, the padded patch box, else `default_box`; an
   /// approximation's pieces each in their own padded box) and covers the patch (a
@@ -90,8 +96,8 @@ class PolynomialLeaf {
   /// parse errors, `constant_polynomial`, `invalid_box`, `degree_too_high` (safe),
   /// `invalid_domain`, `unbounded_patch`, `no_single_equation` (the image is not a
   /// surface), `invalid_tolerance` (".tolerance": not in (0, 0.5], an implicit leaf's,
-  /// a curve's, or with shape solid); ToleranceNotMet (approximate_patch() could not
-  /// reach the tolerance); LimitExceeded from the budget.
+  /// a curve's, or with shape solid); ToleranceNotMet (no approximation reaches the
+  /// tolerance and safe mode refuses the exact equation); LimitExceeded from the budget.
   /// `dimension` is 3 (a surface) or 2 (a plane curve, see the file comment; a
   /// parametric curve's z text must be empty, else InputError `invalid_value` at
   /// field + ".z"). The shape is resolved as the file comment says.
@@ -114,6 +120,14 @@ class PolynomialLeaf {
 
   /// How many surfaces the leaf joins by min: 1, or an approximation's pieces.
   std::size_t piece_count() const { return pieces_.size(); }
+  /// Fewer lines than any piece of a trimmed leaf takes: its distance function alone has
+  /// a comment, the frame, the box distance and the far-field return before its first
+  /// term (and its cover more). A tolerance's approximation stops once its pieces plus
+  /// this much per sub-domain left reach the exact leaf's lines.
+  static constexpr std::size_t kMinPieceGlslLines = 16;
+  /// The lines the leaf adds to a scene's GLSL: its pieces' distance functions and
+  /// covers, and each further piece's culling test (what a tolerance compares).
+  std::size_t glsl_lines() const;
   /// `float FUNCTION(vec3 p)`: the distance of piece k's surface (F = 0, or q_k = 0)
   /// before trimming (the scene's GLSL applies piece k's cover when trimmed()).
   std::string to_glsl(const std::string& function, std::size_t k = 0) const {
@@ -166,12 +180,36 @@ class PolynomialLeaf {
     }
   };
 
+  // What the exact leaf is built from: F, and the patch it is trimmed to (both null:
+  // untrimmed).
+  struct ExactSource {
+    NodeKind kind;
+    const PolynomialLeafSource& source;
+    const Polynomial& f;
+    const SceneBox& frame_box;
+    const Parametrization* parametrization;
+    const ParameterDomain* domain;
+    int dimension;
+  };
+
   explicit PolynomialLeaf(Polynomial equation) : equation_(std::move(equation)) {}
   // The componentwise min (lower) or max (upper) of the pieces' cover corners.
   Vec3<float> trim_corner(bool upper) const;
-  static PolynomialLeaf build_approximated(PatchApproximation approximation, const Parametrization& parametrization,
-                                           const SceneBox& frame_box, SdfMode mode, const Budget& budget,
-                                           const std::string& field);
+  // Lines piece k adds to the scene's GLSL: its functions, and beyond the first its
+  // culling test and min.
+  std::size_t piece_glsl_lines(std::size_t k) const;
+  // The leaf of F: its distance in the frame box, trimmed to the patch's cover.
+  static PolynomialLeaf build_exact(const ExactSource& in, SdfMode mode, const Budget& budget,
+                                    const std::string& field);
+  // The leaf of a patch with a tolerance: the approximation when its GLSL is shorter
+  // than `exact`'s, else `exact` saying why (none: `no_exact` says why).
+  static PolynomialLeaf build_cheapest(std::optional<PolynomialLeaf> exact, const std::string& no_exact,
+                                       const Parametrization& parametrization, const ParameterDomain& domain,
+                                       const SceneBox& frame_box, double tolerance, SdfMode mode, const Budget& budget,
+                                       const std::string& field);
+  // One approximation piece: q_k's distance in its own fitted box, trimmed to X(S_k)'s cover.
+  static Piece build_piece(const ApproximationPiece& source, const Parametrization& parametrization, SdfMode mode,
+                           const Budget& budget, const std::string& field);
 
   Polynomial equation_;
   std::vector<Piece> pieces_;  // one, or an approximation's
