@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cfloat>
 #include <limits>
-#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -149,20 +148,24 @@ CellPrograms compile_cell_programs(const Polynomial& f, const SceneFrame& frame,
   return cells;
 }
 
-// The fraction of kSamples pseudo-random points of the box (fixed seed) where fp32
-// cannot resolve G in the cell's frame: |G| <= Γ_A·Ĝ(|t|), evaluated in double. Only
-// a heuristic for choosing k; the bound's correctness does not depend on it.
+// The fraction of kSamples points of the box where fp32 cannot resolve G in the
+// cell's frame: |G| <= Γ_A·Ĝ(|t|), evaluated in double. Only a heuristic for choosing
+// k; the bound's correctness does not depend on it. The points are the first of
+// Roberts' R3 sequence (frac(1/2 + i·α), α_j = φ^-j with φ^4 = φ + 1): well spread,
+// and the same on every platform, unlike std::uniform_real_distribution, whose
+// output the standard leaves to the library (the GLSL must not depend on it).
 double unresolved_fraction(const CellPrograms& cells) {
   constexpr int kSamples = 2000;
+  constexpr double kPhi = 1.2207440846057594;  // the real root of x^4 = x + 1
+  constexpr std::array<double, 3> kAlpha = {1 / kPhi, 1 / (kPhi * kPhi), 1 / (kPhi * kPhi * kPhi)};
   const double gamma = gamma_of(0x1p-23, 2.0 * cells.program.degree() + 4);
-  std::mt19937 random(19);
-  std::uniform_real_distribution<double> coordinate(-1, 1);
   int unresolved = 0;
   for (int i = 0; i < kSamples; ++i) {
     std::size_t cell = 0;
     std::array<double, 3> t{};
     for (std::size_t axis = 0; axis < 3; ++axis) {
-      const double u = coordinate(random);
+      const double r = 0.5 + (i + 1) * kAlpha[axis];
+      const double u = 2 * (r - std::floor(r)) - 1;
       const int index = std::clamp(static_cast<int>(std::floor((u + 1) * cells.k / 2)), 0, cells.k - 1);
       cell = cell * static_cast<std::size_t>(cells.k) + static_cast<std::size_t>(index);
       t[axis] = (u + 1) * cells.k - (2 * index + 1);
