@@ -252,7 +252,9 @@ Row measure(const Surface& surface, double tolerance, const PatchSample& wide, c
                 to_string(approximation->surface_to_patch_method);
     measure_patch_to_surface(*approximation, sample, config, diagonal, row);
   } else {
-    row.degree_pieces = std::to_string(leaf.equation().total_degree()) + " × 1";
+    // A tolerance the exact equation answers more cheaply (or alone) keeps it.
+    row.degree_pieces =
+        std::to_string(leaf.equation().total_degree()) + " × 1" + (tolerance > 0 ? " (exact kept)" : "");
     row.terms = std::to_string(leaf.equation().num_terms());
   }
   const auto value = [&](float x, float y, float z) { return scene.evaluate<float>(Vec3<float>{x, y, z}); };
