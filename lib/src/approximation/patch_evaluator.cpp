@@ -1,5 +1,6 @@
 #include "patch_evaluator.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "implicitizer/core/rational.hpp"
@@ -11,38 +12,58 @@ DoublePolynomial::DoublePolynomial(const Polynomial& p) : variables_(p.ring()->n
     coefficients_.push_back(to_mpq(p.coefficient(t)).get_d());
     const std::vector<std::int32_t> e = p.exponents(t);
     exponents_.insert(exponents_.end(), e.begin(), e.end());
+    for (std::int32_t k : e) stride_ = std::max(stride_, std::size_t(k) + 1);
   }
+}
+
+template <typename Use>
+double DoublePolynomial::with_powers(const double* x, Use use) const {
+  constexpr std::size_t kInline = 96;
+  double inline_powers[kInline];
+  std::vector<double> heap;
+  const std::size_t size = variables_ * stride_;
+  double* powers = size <= kInline ? inline_powers : (heap.resize(size), heap.data());
+  for (std::size_t v = 0; v < variables_; ++v) {
+    double* row = powers + v * stride_;
+    row[0] = 1;
+    for (std::size_t k = 1; k < stride_; ++k) row[k] = row[k - 1] * x[v];
+  }
+  return use(static_cast<const double*>(powers));
 }
 
 double DoublePolynomial::value(const double* x) const {
-  double sum = 0;
-  for (std::size_t t = 0; t < coefficients_.size(); ++t) {
-    double term = coefficients_[t];
-    for (std::size_t v = 0; v < variables_; ++v) term *= std::pow(x[v], exponents_[t * variables_ + v]);
-    sum += term;
-  }
-  return sum;
+  return with_powers(x, [&](const double* powers) {
+    double sum = 0;
+    for (std::size_t t = 0; t < coefficients_.size(); ++t) {
+      double term = coefficients_[t];
+      for (std::size_t v = 0; v < variables_; ++v) term *= powers[v * stride_ + exponents_[t * variables_ + v]];
+      sum += term;
+    }
+    return sum;
+  });
 }
 
 double DoublePolynomial::value_and_gradient(const double* x, double* gradient) const {
-  double sum = 0;
   for (std::size_t v = 0; v < variables_; ++v) gradient[v] = 0;
-  for (std::size_t t = 0; t < coefficients_.size(); ++t) {
-    const std::int32_t* e = exponents_.data() + t * variables_;
-    double term = coefficients_[t];
-    for (std::size_t v = 0; v < variables_; ++v) term *= std::pow(x[v], e[v]);
-    sum += term;
-    for (std::size_t v = 0; v < variables_; ++v) {
-      if (e[v] == 0) continue;
-      // ∂/∂x_v of c·Π x^e: the same product with x_v^(e_v − 1), times e_v.
-      double d = coefficients_[t] * e[v] * std::pow(x[v], e[v] - 1);
-      for (std::size_t w = 0; w < variables_; ++w) {
-        if (w != v) d *= std::pow(x[w], e[w]);
+  return with_powers(x, [&](const double* powers) {
+    double sum = 0;
+    for (std::size_t t = 0; t < coefficients_.size(); ++t) {
+      const std::int32_t* e = exponents_.data() + t * variables_;
+      double term = coefficients_[t];
+      for (std::size_t v = 0; v < variables_; ++v) term *= powers[v * stride_ + e[v]];
+      sum += term;
+      for (std::size_t v = 0; v < variables_; ++v) {
+        if (e[v] == 0) continue;
+        // ∂/∂x_v of c·Π x^e: the same product with x_v^(e_v − 1), times e_v.
+        double d = coefficients_[t] * e[v] * powers[v * stride_ + e[v] - 1];
+        for (std::size_t w = 0; w < variables_; ++w) {
+          if (w != v) d *= powers[w * stride_ + e[w]];
+        }
+        gradient[v] += d;
       }
-      gradient[v] += d;
     }
-  }
-  return sum;
+    return sum;
+  });
 }
 
 FramedPolynomial::FramedPolynomial(const Polynomial& q, const Frame& frame) : frame_(frame) {

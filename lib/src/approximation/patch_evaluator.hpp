@@ -26,7 +26,14 @@ class DoublePolynomial {
   double value_and_gradient(const double* x, double* gradient) const;
 
  private:
+  // Calls `use(powers)` with powers[v·stride_ + k] = x_v^k, k = 0 … stride_ − 1:
+  // every term then costs multiplications only (std::pow took four fifths of an
+  // approximation's time).
+  template <typename Use>
+  double with_powers(const double* x, Use use) const;
+
   std::size_t variables_ = 0;
+  std::size_t stride_ = 1;  // the largest exponent + 1
   std::vector<double> coefficients_;
   std::vector<std::int32_t> exponents_;  // variables_ per term
 };
