@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
@@ -361,9 +360,7 @@ PolynomialLeaf PolynomialLeaf::build_cheapest(std::optional<PolynomialLeaf> exac
                       ", and the rest of the domain needs more");
   } catch (const ToleranceNotMet& e) {
     if (!exact) throw ToleranceNotMet(std::string(e.what()) + "; and the exact equation: " + no_exact, e.best());
-    std::ostringstream why;
-    why << "no approximation meets the tolerance (" << e.what() << "); the exact equation does";
-    return keep_exact(why.str());
+    return keep_exact("no approximation meets the tolerance (" + std::string(e.what()) + "); the exact equation does");
   }
   compile_accepted(approximation.pieces);
   if (lines >= exact_lines) {
