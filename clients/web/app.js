@@ -39,6 +39,9 @@ const ui = {
   resultTime: $('result-time'),
   verified: $('verified'),
   resultStats: $('result-stats'),
+  substitution: $('substitution'),
+  substitutionFormulas: $('substitution-formulas'),
+  substitutionRational: $('substitution-rational'),
   reproduce: $('reproduce'),
   singular: $('reproduce-singular'),
   macaulay2: $('reproduce-macaulay2'),
@@ -323,6 +326,7 @@ function clearAnswer(reason, text) {
   for (const element of [ui.degree, ui.resultMethod, ui.resultTime, ui.verified, ui.resultStats, ui.singular, ui.macaulay2]) {
     element.textContent = '';
   }
+  showSubstitution(null);
   state.answered = null;
   ui.resultEmpty.dataset.reason = reason;
   ui.resultEmpty.textContent = text;
@@ -395,8 +399,27 @@ function showParametricResult(result, roundTripMs) {
   ui.singular.textContent = result.reproduce?.singular || '';
   ui.macaulay2.textContent = result.reproduce?.macaulay2 || '';
   ui.reproduce.hidden = !result.reproduce;
+  showSubstitution(result.substitution);
   ui.result.hidden = false;
   ui.resultEmpty.hidden = true;
+}
+
+/// How the server made a trigonometric or hyperbolic input rational (docs/api.md,
+/// "substitution"): the formulas (t_u = tan(u/2), e_w = exp(w)) and the rational
+/// parametrization the equation was computed from, which the scripts start from.
+/// Nothing for a rational input.
+function showSubstitution(substitution) {
+  ui.substitution.hidden = !substitution;
+  if (!substitution) {
+    ui.substitutionFormulas.textContent = '';
+    ui.substitutionRational.textContent = '';
+    return;
+  }
+  ui.substitutionFormulas.textContent = substitution.substitutions.map((s) => s.formula).join(', ');
+  ui.substitutionRational.textContent = ['x', 'y', 'z']
+    .filter((c) => substitution.rational[c] !== undefined)
+    .map((c) => `${c} = ${substitution.rational[c]}`)
+    .join('\n');
 }
 
 function showImplicitResult(equation, answer, roundTripMs) {
@@ -414,6 +437,7 @@ function showImplicitResult(equation, answer, roundTripMs) {
   ui.resultStats.textContent = `Distance function ${answer.function} in ${answer.mode} mode.`;
   ui.resultStats.title = '';
   ui.reproduce.hidden = true;
+  showSubstitution(null);
   ui.result.hidden = false;
   ui.resultEmpty.hidden = true;
 }
