@@ -224,6 +224,7 @@ function errorText(error) {
   code.className = 'code-name';
   code.textContent = error.code;
   fragment.append(code, ': ', error.message);
+  if (error.hint) fragment.append(` — ${error.hint}`);
   if (error.code === 'overloaded' && error.retryAfter) fragment.append(` (retry in ${error.retryAfter} s)`);
   if (Array.isArray(error.details?.generators) && error.details.generators.length) {
     const pre = document.createElement('pre');
@@ -696,6 +697,8 @@ function submitParametric() {
       result = await implicitize({ x, y, z, parameters, method: ui.method.value, timeoutMs: Number(ui.timeout.value) }, { signal: busy.controller.signal });
     } catch (e) {
       if (e instanceof ApiError) e.fieldMap = PARAMETRIC_FIELDS;
+      // A name the field does not list: most likely the field is still s, t.
+      if (e.code === 'unknown_variable') e.hint = 'the parameters field lists the names the coordinates may use';
       throw e;
     }
     busy.controller.signal.throwIfAborted(); // cancelled as the answer arrived

@@ -164,7 +164,7 @@ test('bad parameters are shown beside the field, with the code', async () => {
   await page.waitForSelector('#y-error:not([hidden])');
   const unknown = await postJson('/v1/implicitize', { x: 's', y: 't', z: 's*t', parameters: ['s'] });
   assert.equal(unknown.json.error.code, 'unknown_variable');
-  assert.match(await page.textContent('#y-error'), /unknown_variable/);
+  assert.match(await page.textContent('#y-error'), /unknown_variable: .* — the parameters field lists the names/);
   assert.equal(await page.getAttribute('#y-error', 'data-position'), String(unknown.json.error.position));
   // A space variable as a parameter: the server's error names the field "parameters".
   await implicitizeTyped({ params: 's, x', x: 's', y: 's^2', z: 's^3' });
