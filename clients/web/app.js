@@ -400,27 +400,27 @@ function showParametricResult(result, roundTripMs) {
   ui.singular.textContent = result.reproduce?.singular || '';
   ui.macaulay2.textContent = result.reproduce?.macaulay2 || '';
   ui.reproduce.hidden = !result.reproduce;
-  showSubstitution(result.substitution);
+  showSubstitution(result);
   ui.result.hidden = false;
   ui.resultEmpty.hidden = true;
 }
 
-/// How the server made a trigonometric or hyperbolic input rational (docs/api.md,
-/// "substitution"): the formulas (t_u = tan(u/2), e_w = exp(w)) and the rational
-/// parametrization the equation was computed from, which the scripts start from.
-/// Nothing for a rational input.
-function showSubstitution(substitution) {
-  ui.substitution.hidden = !substitution;
-  if (!substitution) {
+/// How the server made a trigonometric or hyperbolic input rational (the answer's
+/// `substitution` and `rational_parametrization`, docs/api.md): the formulas
+/// (t_u = tan(u/2), e_w = exp(w)) and the rational parametrization the equation was
+/// computed from, which the scripts start from. Nothing for a rational input (or null).
+function showSubstitution(result) {
+  const substitution = result?.substitution;
+  const rational = result?.rational_parametrization;
+  const shown = Array.isArray(substitution) && substitution.length > 0 && rational;
+  ui.substitution.hidden = !shown;
+  if (!shown) {
     ui.substitutionFormulas.textContent = '';
     ui.substitutionRational.textContent = '';
     return;
   }
-  ui.substitutionFormulas.textContent = substitution.substitutions.map((s) => s.formula).join(', ');
-  ui.substitutionRational.textContent = ['x', 'y', 'z']
-    .filter((c) => substitution.rational[c] !== undefined)
-    .map((c) => `${c} = ${substitution.rational[c]}`)
-    .join('\n');
+  ui.substitutionFormulas.textContent = substitution.map((s) => s.formula).join(', ');
+  ui.substitutionRational.textContent = result.variables.map((c) => `${c} = ${rational[c]}`).join('\n');
 }
 
 function showImplicitResult(equation, answer, roundTripMs) {
