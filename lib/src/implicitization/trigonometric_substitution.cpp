@@ -7,6 +7,7 @@
 #include <set>
 
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/implicitization/patch_bounds.hpp"
 #include "implicitizer/polynomial/parser.hpp"
 
 namespace implicitizer {
@@ -158,7 +159,7 @@ class UseScanner {
   std::map<const Expression*, Combination> combinations_;
 };
 
-// The ring after the substitution: replaced parameters renamed t_θ or e_θ.
+// The ring after the substitution: replaced parameters renamed tθ or eθ.
 std::vector<ParameterSubstitution> name_substitutions(const Ring& ring, const std::vector<ParameterUses>& uses,
                                                       std::vector<std::string>& names) {
   names = ring.variables();
@@ -169,8 +170,11 @@ std::vector<ParameterSubstitution> name_substitutions(const Ring& ring, const st
     ParameterSubstitution s;
     s.kind = uses[v].trigonometric ? ParameterSubstitution::Kind::half_angle : ParameterSubstitution::Kind::exponential;
     s.parameter = names[v];
-    s.variable = (uses[v].trigonometric ? "t_" : "e_") + names[v];
-    while (taken.count(s.variable)) s.variable += "_";
+    // No '_': the reproduce scripts keep names of letters and digits (Macaulay2 reads
+    // '_' as an operator), so the scripts and the answer name the same parameters.
+    const std::string base = (uses[v].trigonometric ? "t" : "e") + names[v];
+    s.variable = base;
+    for (int n = 1; taken.count(s.variable); ++n) s.variable = base + std::to_string(n);
     taken.insert(s.variable);
     names[v] = s.variable;
     substitutions.push_back(s);
@@ -288,15 +292,30 @@ RationalizedCoordinates substitute_trigonometric(const std::vector<const Express
   return out;
 }
 
-std::pair<double, double> map_parameter_interval(ParameterSubstitution::Kind kind, double lo, double hi) {
-  if (kind == ParameterSubstitution::Kind::exponential) return {std::exp(lo), std::exp(hi)};
-  if (!(lo > -std::numbers::pi && hi < std::numbers::pi && lo < hi)) {
-    throw InputError("angle_out_of_range",
-                     "an angle interval must lie inside (-pi, pi): theta = pi is tan(theta/2) = infinity, which a "
-                     "finite parameter box cannot hold")
-        .in_field("domain");
+ParameterDomain map_parameter_domain(const std::vector<ParameterSubstitution>& substitutions,
+                                     const Ring& rational_parameters, const ParameterDomain& domain) {
+  ParameterDomain out = domain;
+  for (const auto& s : substitutions) {
+    const auto index = rational_parameters.index_of(s.variable);
+    if (!index || *index >= out.intervals.size()) continue;
+    auto& [lo, hi] = out.intervals[*index];
+    const double a = CGAL::to_double(lo);
+    const double b = CGAL::to_double(hi);
+    const bool half_angle = s.kind == ParameterSubstitution::Kind::half_angle;
+    const double mapped_lo = half_angle ? std::tan(a / 2) : std::exp(a);
+    const double mapped_hi = half_angle ? std::tan(b / 2) : std::exp(b);
+    const bool inside = half_angle ? (a > -std::numbers::pi && b < std::numbers::pi) : std::isfinite(mapped_hi);
+    if (!inside) {
+      throw InputError("domain_out_of_range",
+                       "the interval of " + s.parameter + " maps through " + to_string(s) +
+                           (half_angle ? " only inside (-pi, pi): theta = pi is tan(theta/2) = infinity"
+                                       : " to a number beyond double range"))
+          .in_field("domain");
+    }
+    lo = Rational(mapped_lo);
+    hi = Rational(mapped_hi);
   }
-  return {std::tan(lo / 2), std::tan(hi / 2)};
+  return out;
 }
 
 }  // namespace implicitizer

@@ -37,6 +37,9 @@
 
 namespace implicitizer {
 
+// patch_bounds.hpp, which includes this header through parametrization.hpp.
+struct ParameterDomain;
+
 /// How one parameter of the input was replaced by a rational one.
 struct ParameterSubstitution {
   enum class Kind {
@@ -51,7 +54,7 @@ struct ParameterSubstitution {
 /// "half_angle" or "exponential".
 const char* to_string(ParameterSubstitution::Kind kind);
 
-/// The substitution as a formula: "t_u = tan(u/2)" or "e_u = exp(u)".
+/// The substitution as a formula: "tu = tan(u/2)" or "eu = exp(u)".
 std::string to_string(const ParameterSubstitution& substitution);
 
 /// A parametrization after the substitution: the rational parameters (the input's, in
@@ -67,18 +70,24 @@ bool contains_call(const Expression& e);
 
 /// Converts the coordinate trees `coordinates` (field names `fields`, e.g. "x", "y",
 /// "z") over the parameters of `parameters` into rational functions by the file
-/// comment's substitution. The new variable of θ is `t_θ` (half angle) or `e_θ`
-/// (exponential), with `_` appended while that name is taken. Throws InputError (the
+/// comment's substitution. The new variable of θ is `tθ` (half angle) or `eθ`
+/// (exponential: `eu` for u), with 1, 2, … appended while that name is taken. Throws InputError (the
 /// file comment's codes, and the evaluator's `unknown_variable`, `division_by_zero`)
 /// with the field set; LimitExceeded from `budget`.
 RationalizedCoordinates substitute_trigonometric(const std::vector<const Expression*>& coordinates,
                                                  const std::vector<std::string>& fields, const RingPtr& parameters,
                                                  const Budget& budget = Budget());
 
-/// The interval of the rational parameter that a parameter interval [lo, hi] maps to,
-/// in double: [tan(lo/2), tan(hi/2)] for a half angle (requires −π < lo < hi < π: the
-/// point θ = ±π is t = ∞, which no finite interval holds), [exp(lo), exp(hi)] for an
-/// exponential. Throws InputError `angle_out_of_range` (field "domain") otherwise.
-std::pair<double, double> map_parameter_interval(ParameterSubstitution::Kind kind, double lo, double hi);
+/// `domain` (one interval per parameter, in the input's parameters: angles for a half
+/// angle) mapped through `substitutions` onto the parameters of `rational_parameters`:
+/// θ in [lo, hi] becomes t in [tan(lo/2), tan(hi/2)] (θ ↦ tan(θ/2) increases on
+/// (−π, π)) or e in [exp(lo), exp(hi)]; other parameters keep their interval. The new
+/// ends are the doubles nearest the true ones (tan and exp of a non-zero rational are
+/// irrational), so the patch drawn is within one rounding of the one asked for. An
+/// angle interval must lie strictly inside (−π, π): θ = ±π is t = ∞, which no finite
+/// box holds (the whole circle is the default domain, the whole plane of t). Throws
+/// InputError `domain_out_of_range` (field "domain") otherwise, or when exp overflows.
+ParameterDomain map_parameter_domain(const std::vector<ParameterSubstitution>& substitutions,
+                                     const Ring& rational_parameters, const ParameterDomain& domain);
 
 }  // namespace implicitizer
