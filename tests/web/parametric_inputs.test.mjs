@@ -254,10 +254,11 @@ async function assertRationalized(reference, t, label) {
 }
 
 test('the trigonometric sphere and torus and the cosh/sinh hyperboloid from the menu', async (t) => {
-  const formulas = {
-    sphere_trig: ['t_u = tan(u/2)', 't_v = tan(v/2)'],
-    torus_trig: ['t_u = tan(u/2)', 't_v = tan(v/2)'],
-    hyperboloid_cosh: ['e_u = exp(u)', 't_v = tan(v/2)'],
+  // The substitution of each parameter: tan(θ/2) for an angle, exp for cosh/sinh.
+  const kinds = {
+    sphere_trig: ['half_angle', 'half_angle'],
+    torus_trig: ['half_angle', 'half_angle'],
+    hyperboloid_cosh: ['exponential', 'half_angle'],
   };
   for (const name of ['sphere_trig', 'torus_trig', 'hyperboloid_cosh']) {
     const example = examples.find((e) => e.name === name);
@@ -270,7 +271,8 @@ test('the trigonometric sphere and torus and the cosh/sinh hyperboloid from the 
     assert.equal(reference.status, 200, JSON.stringify(reference.json));
     assert.equal(reference.json.implicit, example.implicit, `examples.json holds ${name}'s equation`);
     await assertRationalized(reference.json, t, name);
-    assert.equal(await page.textContent('#substitution-formulas'), formulas[name].join(', '));
+    assert.deepEqual(reference.json.substitution.map((x) => [x.parameter, x.kind]), [['u', kinds[name][0]], ['v', kinds[name][1]]]);
+    assert.equal(await page.textContent('#substitution-formulas'), reference.json.substitution.map((x) => x.formula).join(', '));
     assert.ok((await drawnPixels()) > 1000, `${name} is drawn`);
   }
 });
