@@ -19,7 +19,10 @@
 // patch X(D) over its domain D, in a box the server fits to the patch (docs/sdf.md,
 // "Patches"); open surfaces get a domain that shows their shape (DOMAINS), closed
 // rational ones (sphere, torus, Steiner's surface) keep the default, the whole plane.
-// Two examples are the page's own (EXTRA_EXAMPLES): a bicubic patch and a plane curve.
+// The page's own examples (EXTRA_EXAMPLES): a bicubic patch, a plane curve, and three
+// surfaces as textbooks write them, in cos/sin and cosh/sinh (issue 20), which the
+// server makes rational (docs/api.md, "substitution"). An example names its parameters
+// (`parameters`, the page's parameters field) when they are not s, t.
 import fs from 'node:fs';
 import path from 'node:path';
 import process from 'node:process';
@@ -55,8 +58,15 @@ const DOMAINS = {
 };
 
 // Examples that are not benchmark surfaces, with their implicit equations as
-// `implicitizer implicitize --x X --y Y [--z Z]` computes them (verified: the
-// parametrization substituted gives 0).
+// `implicitizer implicitize --x X --y Y [--z Z] [--params P]` computes them (verified:
+// the parametrization substituted gives 0). The trigonometric sphere and torus keep
+// the default domain (every angle but π, where tan(θ/2) is infinite: the rational form's
+// whole plane); the hyperboloid's domain is u in [-1, 1] and the angle v in [-5/2, 5/2]
+// radians (radians are exact numbers like any other; π is not one, so a closed circle
+// of angles cannot be typed, and the default domain of an unbounded patch would show
+// only a corner of it). Not wider: the page's default tolerance approximates the patch,
+// and v in [-3, 3] (tv = tan(v/2) up to 14) takes 30 pieces and 33 s where [-5/2, 5/2]
+// takes one piece and half a second (POST /v1/sdf with "tolerance": 0.001).
 const EXTRA_EXAMPLES = [
   {
     name: 'bicubic_patch',
@@ -76,9 +86,47 @@ const EXTRA_EXAMPLES = [
     x: 't*(1+t^2)/(1+t^4)',
     y: 't*(1-t^2)/(1+t^4)',
     z: '',
+    parameters: ['t'],
     degree: 4,
     box: [-1.25, -0.75, 1.25, 0.75],
     implicit: 'x^4+2*x^2*y^2+y^4-x^2+y^2',
+    group: 'page',
+  },
+  {
+    name: 'sphere_trig',
+    label: 'Unit sphere in cos/sin',
+    x: 'cos(u)*cos(v)',
+    y: 'cos(u)*sin(v)',
+    z: 'sin(u)',
+    parameters: ['u', 'v'],
+    degree: 2,
+    box: [-2, -2, -2, 2, 2, 2],
+    implicit: 'x^2+y^2+z^2-1',
+    group: 'page',
+  },
+  {
+    name: 'torus_trig',
+    label: 'Torus in cos/sin, R = 2, r = 1',
+    x: '(2+cos(v))*cos(u)',
+    y: '(2+cos(v))*sin(u)',
+    z: 'sin(v)',
+    parameters: ['u', 'v'],
+    degree: 4,
+    box: [-4, -4, -4, 4, 4, 4],
+    implicit: 'x^4+2*x^2*y^2+y^4+2*x^2*z^2+2*y^2*z^2+z^4-10*x^2-10*y^2+6*z^2+9',
+    group: 'page',
+  },
+  {
+    name: 'hyperboloid_cosh',
+    label: 'Hyperboloid of one sheet in cosh/sinh',
+    x: 'cosh(u)*cos(v)',
+    y: 'cosh(u)*sin(v)',
+    z: 'sinh(u)',
+    parameters: ['u', 'v'],
+    degree: 2,
+    domain: ['-1', '1', '-5/2', '5/2'],
+    box: [-2, -2, -2, 2, 2, 2],
+    implicit: 'x^2+y^2-z^2-1',
     group: 'page',
   },
 ];

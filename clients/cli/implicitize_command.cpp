@@ -26,6 +26,21 @@ std::vector<OptionSpec> option_specs() {
   return spec;
 }
 
+// Stdout keeps the one line of the contract; what was implicitized instead of the
+// input, when functions were made rational, goes to stderr.
+void print_substitution(const ImplicitizeAnswer& answer) {
+  if (answer.substitutions.empty()) return;
+  std::cerr << "made rational by";
+  for (std::size_t i = 0; i < answer.substitutions.size(); ++i) {
+    std::cerr << (i ? ", " : " ") << to_string(answer.substitutions[i]);
+  }
+  std::cerr << '\n';
+  const std::vector<std::string> names = coordinate_names(answer.rational_coordinates.size());
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    std::cerr << "  " << names[i] << " = " << answer.rational_coordinates[i] << '\n';
+  }
+}
+
 }  // namespace
 
 int run_implicitize_command(std::span<const std::string> args) {
@@ -77,6 +92,7 @@ int run_implicitize_command(std::span<const std::string> args) {
       std::cout << encode_implicitize_response(answer) << '\n';
     } else {
       std::cout << to_string(answer.result.implicit) << '\n';
+      print_substitution(answer);
     }
   });
 }

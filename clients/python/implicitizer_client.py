@@ -235,7 +235,8 @@ class Client:
         of docs/sdf.md); give one.
 
         `shape` is "auto" (default), "sheet" or "solid"; `domain` the parameter domain
-        [s0, s1, t0, t1] ([s0, s1] for a curve; numbers or exact strings like "1/3");
+        [s0, s1, t0, t1], lo and hi for each parameter in the order of `parameters`
+        (without them, the order of first appearance; numbers or exact strings like "1/3");
         `mode` is "fast" (default) or "safe" (a proven lower bound); `box` six numbers
         x0, y0, z0, x1, y1, z1 (four for a curve; default [-2, 2]³, fitted to a patch);
         `name` the prefix of the function (default "surface"); `tolerance` EPS in

@@ -111,23 +111,27 @@ export async function checkHealth() {
   }
 }
 
-/// POST /v1/implicitize: {x, y, z?, method, timeout_ms} -> the implicit equation.
-export function implicitize({ x, y, z, method, timeoutMs }, options) {
+/// POST /v1/implicitize: {x, y, z?, parameters?, method, timeout_ms} -> the implicit
+/// equation. `parameters` is the list of names in order (absent: the server takes the
+/// identifiers other than x, y, z in order of appearance).
+export function implicitize({ x, y, z, parameters, method, timeoutMs }, options) {
   const body = { x, y };
   if (z !== undefined && z !== '') body.z = z;
+  if (parameters && parameters.length) body.parameters = parameters;
   if (method) body.method = method;
   if (timeoutMs) body.timeout_ms = timeoutMs;
   return postJson('/v1/implicitize', body, options);
 }
 
 /// POST /v1/sdf for an implicit equation ({implicit}), a parametric surface or curve
-/// ({x, y, z?, domain?}: z empty for a plane curve; domain a list of exact numbers
-/// s0, s1[, t0, t1] as typed, empty for the default) or a scene ({scene}), with the
+/// ({x, y, z?, parameters?, domain?}: z empty for a plane curve; parameters the names
+/// in order; domain a list of exact numbers, lo and hi for each parameter in that
+/// order, as typed, empty for the default) or a scene ({scene}), with the
 /// shape (auto, sheet, solid; not for a scene, whose leaves carry theirs), mode, box
 /// (null: fitted to a patch, else the default) and name, and for a parametric surface
 /// a tolerance (null: the exact equation) -> {glsl, function, shape, dimension, box
 /// (the box actually used), uniforms, approximation (with a tolerance), ...}.
-export function sdf({ implicit, x, y, z, domain, tolerance, scene, shape, mode, box, name, timeoutMs }, options) {
+export function sdf({ implicit, x, y, z, parameters, domain, tolerance, scene, shape, mode, box, name, timeoutMs }, options) {
   const body = { mode, name };
   if (scene !== undefined) {
     body.scene = scene;
@@ -137,6 +141,7 @@ export function sdf({ implicit, x, y, z, domain, tolerance, scene, shape, mode, 
     body.x = x;
     body.y = y;
     if (z) body.z = z;
+    if (parameters && parameters.length) body.parameters = parameters;
     if (domain && domain.length) body.domain = domain;
     if (tolerance !== null && tolerance !== undefined) body.tolerance = tolerance;
   }

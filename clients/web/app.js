@@ -10,13 +10,18 @@ import { defaultCamera, Preview, ShaderError } from './preview.js';
 
 const $ = (id) => document.getElementById(id);
 const INITIAL_EXAMPLE = 'torus_R2_r1';
-const FIELDS = ['x', 'y', 'z', 'domain', 'tolerance', 'equation', 'box'];
+const FIELDS = ['params', 'x', 'y', 'z', 'domain', 'tolerance', 'equation', 'box'];
+const DEFAULT_PARAMETERS = ['s', 't'];
 
 const ui = {
   tabs: { parametric: $('tab-parametric'), implicit: $('tab-implicit') },
   forms: { parametric: $('form-parametric'), implicit: $('form-implicit') },
   examples: $('examples'),
-  inputs: { x: $('x'), y: $('y'), z: $('z'), domain: $('domain'), tolerance: $('tolerance'), equation: $('equation'), box: $('box') },
+  inputs: { params: $('params'), x: $('x'), y: $('y'), z: $('z'), domain: $('domain'), tolerance: $('tolerance'), equation: $('equation'), box: $('box') },
+  coordinateLabels: [...document.querySelectorAll('label.coordinate .arguments')],
+  domainNames: $('domain-names'),
+  resultEmpty: $('result-empty'),
+  previewEmpty: $('preview-empty'),
   shape: $('shape'),
   method: $('method'),
   timeout: $('timeout'),
@@ -34,6 +39,9 @@ const ui = {
   resultTime: $('result-time'),
   verified: $('verified'),
   resultStats: $('result-stats'),
+  substitution: $('substitution'),
+  substitutionFormulas: $('substitution-formulas'),
+  substitutionRational: $('substitution-rational'),
   reproduce: $('reproduce'),
   singular: $('reproduce-singular'),
   macaulay2: $('reproduce-macaulay2'),
@@ -57,6 +65,7 @@ const state = {
   examples: [],
   busy: null, // the running request: {controller, started, timer, setLabel}
   drawn: null, // {source, equation, box, name, mode, shape, answerBox, dimension}: what the preview shows
+  answered: null, // {source, equation, box, name}: the surface whose answer is shown (a mode switch redraws it)
   boxFromExample: false, // the box input holds the example's box (refilled when the tab changes)
   glsl: '', // the last GLSL POST /v1/sdf returned
 };
@@ -78,8 +87,8 @@ function shortRenderer(name) {
   return (m ? m[1] : name).replace(/ \(0x[0-9a-fA-F]+\)/g, '').replace(/\s+Direct3D.*$/, '');
 }
 
-// The numbers of a text ("a, b c"), each with its position, for the error caret.
-function numbersOf(text) {
+// The items of a list typed as text ("a, b c"), each with its position, for the error caret.
+function itemsOf(text) {
   const parts = [];
   const re = /[^\s,]+/g;
   let m;
@@ -91,7 +100,7 @@ function numbersOf(text) {
 /// spaces); empty gives null (the server fits the box to a patch, else [-2, 2]^3).
 /// Throws an ApiError-like object with the position of the first bad number.
 function parseBox(text) {
-  const parts = numbersOf(text);
+  const parts = itemsOf(text);
   if (parts.length === 0) return null;
   const fail = (message, position) => {
     throw new ApiError({ status: 0, code: 'invalid_box', message, position, field: 'box' });
@@ -131,17 +140,34 @@ function parseTolerance(text) {
   return value;
 }
 
-/// Parses the parameter domain "s0, s1, t0, t1" (a curve: "s0, s1"); empty gives null
-/// (the server's default domain). The numbers are sent as typed (exact: "-3/2").
-function parseDomain(text, parameters) {
-  const parts = numbersOf(text);
+/// Parses the parameters field "u, v" (commas or spaces) into the list of names, in
+/// order. Only emptiness is checked here: the names themselves are the server's to judge
+/// (invalid_parameter, parameter_is_space_variable, unknown_variable), as for every client.
+function parseParameters(text) {
+  const names = itemsOf(text).map((p) => p.value);
+  if (names.length === 0) {
+    throw new ApiError({ status: 0, code: 'invalid_parameter', message: 'name the parameters, e.g. s, t (a curve: t)', position: 0, field: 'params' });
+  }
+  return names;
+}
+
+// "u₀, u₁, v₀, v₁": the domain's numbers for the parameters `names`.
+function domainNames(names) {
+  return names.map((n) => `${n}₀, ${n}₁`).join(', ');
+}
+
+/// Parses the parameter domain "u0, u1, v0, v1", one interval per parameter of `names`
+/// in their order; empty gives null (the server's default domain). The numbers are sent
+/// as typed (exact: "-3/2").
+function parseDomain(text, names) {
+  const parts = itemsOf(text);
   if (parts.length === 0) return null;
   const fail = (message, position) => {
     throw new ApiError({ status: 0, code: 'invalid_domain', message, position, field: 'domain' });
   };
+  const parameters = names.length;
   if (parts.length !== 2 * parameters) {
-    const names = parameters === 1 ? 's0, s1' : 's0, s1, t0, t1';
-    fail(`the domain needs ${2 * parameters} numbers (${names}), not ${parts.length}`, parts[2 * parameters]?.position ?? text.length);
+    fail(`the domain needs ${2 * parameters} numbers (${domainNames(names)}), not ${parts.length}`, parts[2 * parameters]?.position ?? text.length);
   }
   const values = parts.map((p) => {
     const v = exactValue(p.value);
@@ -149,7 +175,7 @@ function parseDomain(text, parameters) {
     return v;
   });
   for (let i = 0; i < parameters; ++i) {
-    if (!(values[2 * i] < values[2 * i + 1])) fail(`${'st'[i]}0 must be less than ${'st'[i]}1`, parts[2 * i + 1].position);
+    if (!(values[2 * i] < values[2 * i + 1])) fail(`${names[i]}₀ must be less than ${names[i]}₁`, parts[2 * i + 1].position);
   }
   return parts.map((p) => p.value);
 }
@@ -198,6 +224,7 @@ function errorText(error) {
   code.className = 'code-name';
   code.textContent = error.code;
   fragment.append(code, ': ', error.message);
+  if (error.hint) fragment.append(` — ${error.hint}`);
   if (error.code === 'overloaded' && error.retryAfter) fragment.append(` (retry in ${error.retryAfter} s)`);
   if (Array.isArray(error.details?.generators) && error.details.generators.length) {
     const pre = document.createElement('pre');
@@ -285,6 +312,59 @@ document.addEventListener('keydown', (e) => {
   if (e.key === 'Escape' && state.busy) state.busy.controller.abort();
 });
 
+// ---------------------------------------------------------------- empty states
+
+// What a request replaces is taken off the page when it starts, and stays off, with the
+// reason said in its place, when it fails or is cancelled before its own answer
+// arrives: nothing on screen ever answers an input other than the one typed.
+
+/// Takes the answer (equation, facts, scripts) off the page and says why there is none:
+/// `reason` is "running", "failed" or "cancelled" (data-reason), `text` the sentence.
+function clearAnswer(reason, text) {
+  ui.result.hidden = true;
+  ui.implicit.textContent = '';
+  delete ui.implicit.dataset.equation;
+  for (const element of [ui.degree, ui.resultMethod, ui.resultTime, ui.verified, ui.resultStats, ui.singular, ui.macaulay2]) {
+    element.textContent = '';
+  }
+  showSubstitution(null);
+  state.answered = null;
+  ui.resultEmpty.dataset.reason = reason;
+  ui.resultEmpty.textContent = text;
+  ui.resultEmpty.hidden = false;
+}
+
+/// Takes the surface off the preview (the canvas, or the CPU renderer's image without
+/// WebGL2), with its GLSL and its approximation line, and says why the stage is empty.
+function clearPreview(reason, text) {
+  if (preview) {
+    preview.clear();
+  } else {
+    ui.cpuImage.hidden = true;
+    if (ui.cpuImage.src) URL.revokeObjectURL(ui.cpuImage.src);
+    ui.cpuImage.removeAttribute('src');
+  }
+  state.drawn = null;
+  state.glsl = '';
+  ui.glsl.textContent = '';
+  ui.glslSummary.textContent = '';
+  ui.copyGlsl.disabled = true;
+  ui.stats.textContent = '';
+  showApproximation(null);
+  hidePreviewError();
+  for (const key of ['mode', 'equation', 'request']) delete ui.canvas.dataset[key];
+  ui.previewEmpty.dataset.reason = reason;
+  ui.previewEmpty.textContent = text;
+  ui.previewEmpty.hidden = false;
+}
+
+/// Empties what the request `busy` replaces (`scope`: "answer", a new surface, or
+/// "preview", the same surface redrawn) and has not yet answered itself, saying why.
+function clearReplaced(busy, scope, reason, { answer, picture }) {
+  if (scope === 'answer' && !busy.answered) clearAnswer(reason, answer);
+  if (!busy.drawn) clearPreview(reason, picture);
+}
+
 // ---------------------------------------------------------------- results
 
 // One line on how the answer was computed (the response's stats).
@@ -320,7 +400,27 @@ function showParametricResult(result, roundTripMs) {
   ui.singular.textContent = result.reproduce?.singular || '';
   ui.macaulay2.textContent = result.reproduce?.macaulay2 || '';
   ui.reproduce.hidden = !result.reproduce;
+  showSubstitution(result);
   ui.result.hidden = false;
+  ui.resultEmpty.hidden = true;
+}
+
+/// How the server made a trigonometric or hyperbolic input rational (the answer's
+/// `substitution` and `rational_parametrization`, docs/api.md): the formulas
+/// (t_u = tan(u/2), e_w = exp(w)) and the rational parametrization the equation was
+/// computed from, which the scripts start from. Nothing for a rational input (or null).
+function showSubstitution(result) {
+  const substitution = result?.substitution;
+  const rational = result?.rational_parametrization;
+  const shown = Array.isArray(substitution) && substitution.length > 0 && rational;
+  ui.substitution.hidden = !shown;
+  if (!shown) {
+    ui.substitutionFormulas.textContent = '';
+    ui.substitutionRational.textContent = '';
+    return;
+  }
+  ui.substitutionFormulas.textContent = substitution.map((s) => s.formula).join(', ');
+  ui.substitutionRational.textContent = result.variables.map((c) => `${c} = ${rational[c]}`).join('\n');
 }
 
 function showImplicitResult(equation, answer, roundTripMs) {
@@ -338,7 +438,9 @@ function showImplicitResult(equation, answer, roundTripMs) {
   ui.resultStats.textContent = `Distance function ${answer.function} in ${answer.mode} mode.`;
   ui.resultStats.title = '';
   ui.reproduce.hidden = true;
+  showSubstitution(null);
   ui.result.hidden = false;
+  ui.resultEmpty.hidden = true;
 }
 
 function showGlsl(answer) {
@@ -359,6 +461,7 @@ if (!preview) {
   ui.noWebgl.hidden = false;
   ui.resetView.disabled = true;
   document.querySelector('.stage-hint').hidden = true;
+  ui.previewEmpty.classList.add('below'); // under the message that WebGL2 is missing
 }
 
 function previewStatus(s) {
@@ -369,6 +472,7 @@ function previewStatus(s) {
     ui.stats.textContent = `${s.width}×${s.height} px · AA ${s.aa}×${s.aa} · ${currentMode()} mode · ${formatMs(s.ms)}${gpu ? ' · ' + gpu : ''}`;
     ui.stats.title = s.renderer || '';
   } else if (s.state === 'error' && s.message) ui.stats.textContent = s.message;
+  else if (s.state === 'empty') ui.stats.textContent = '';
 }
 
 function currentMode() {
@@ -405,12 +509,13 @@ async function drawOnServer(drawn, mode, signal) {
   ui.cpuImage.hidden = false;
 }
 
-// The object of a request: {implicit} or {x, y, z?, domain?, tolerance?} (the wire's
-// field names).
+// The object of a request: {implicit} or {x, y, z?, parameters?, domain?, tolerance?}
+// (the wire's field names).
 function requestObject(source) {
   if (source.implicit !== undefined) return { implicit: source.implicit };
   const object = { x: source.x, y: source.y };
   if (source.z) object.z = source.z;
+  if (source.parameters) object.parameters = source.parameters;
   if (source.domain) object.domain = source.domain;
   if (source.tolerance !== null && source.tolerance !== undefined) object.tolerance = source.tolerance;
   return object;
@@ -448,6 +553,8 @@ async function drawSurface(source, equation, box, name, busy) {
   const signal = busy.controller.signal;
   const timeoutMs = Number(ui.timeout.value);
   const answer = await sdf({ ...source, shape, mode, box, name, timeoutMs }, { signal });
+  // An answer that arrived as the request was cancelled or replaced is not drawn.
+  signal.throwIfAborted();
   const dimension = answer.dimension === 2 ? 2 : 3;
   const answerBox = Array.isArray(answer.box) ? answer.box : box;
   let side = null;
@@ -461,6 +568,7 @@ async function drawSurface(source, equation, box, name, busy) {
     const implicit = answer.leaves?.[0]?.implicit || equation;
     const scene = { type: 'implicit', equation: implicit, shape: 'solid' };
     const signed = await sdf({ scene, mode: 'fast', box: answerBox, name: `${name}_side`, timeoutMs }, { signal });
+    signal.throwIfAborted();
     side = { glsl: signed.glsl, functionName: signed.function };
   }
   showGlsl(answer);
@@ -471,7 +579,7 @@ async function drawSurface(source, equation, box, name, busy) {
   if (!preview) {
     busy.setLabel('Rendering on the server…');
     await drawOnServer(drawn, mode, signal);
-    state.drawn = drawn;
+    showDrawn(busy, drawn);
     return answer;
   }
   // Cancel during the compilation keeps the previous surface on the canvas.
@@ -492,7 +600,7 @@ async function drawSurface(source, equation, box, name, busy) {
     signal.removeEventListener('abort', onAbort);
   }
   // What the canvas draws from now on (its first image is drawn after this).
-  state.drawn = drawn;
+  showDrawn(busy, drawn);
   ui.canvas.dataset.mode = mode;
   ui.canvas.dataset.equation = equation;
   // The object as sent, so that the same view can be asked of POST /v1/render.
@@ -500,15 +608,29 @@ async function drawSurface(source, equation, box, name, busy) {
   return answer;
 }
 
+// The request `busy` has put `drawn` on the stage: the stage is no longer empty.
+function showDrawn(busy, drawn) {
+  state.drawn = drawn;
+  busy.drawn = true;
+  ui.previewEmpty.hidden = true;
+}
+
 function surfaceName() {
   const selected = state.examples.find((e) => e.name === ui.examples.value);
   return selected ? selected.name : 'surface';
 }
 
-// Runs one request: busy state, cancellation, error display.
-async function run(label, body) {
+/// Runs one request: busy state, cancellation, error display. `scope` is what it
+/// replaces: "answer" (a new surface: its equation, facts and preview) or "preview" (the
+/// same surface in another mode or shape: its picture); that is cleared as it starts and
+/// stays cleared, with the reason, if it fails or is cancelled before answering.
+async function run(label, body, scope = 'answer') {
   clearErrors();
   const busy = startBusy(label);
+  clearReplaced(busy, scope, 'running', {
+    answer: `No answer yet: the request is running (${label}).`,
+    picture: scope === 'answer' ? 'Nothing to draw yet: the request is running.' : `Redrawing: ${label}`,
+  });
   try {
     const summary = await body(busy);
     endBusy(busy, 'done', summary);
@@ -516,26 +638,40 @@ async function run(label, body) {
     if (state.drawn && (state.drawn.mode !== currentMode() || state.drawn.shape !== ui.shape.value)) redrawInMode();
   } catch (error) {
     if (error.name === 'AbortError') {
-      if (state.busy === busy) endBusy(busy, 'idle', `Cancelled after ${((performance.now() - busy.started) / 1000).toFixed(1)} s.`);
+      if (state.busy !== busy) return; // replaced by a newer request, which cleared the page
+      const seconds = ((performance.now() - busy.started) / 1000).toFixed(1);
+      endBusy(busy, 'idle', `Cancelled after ${seconds} s.`);
+      clearReplaced(busy, scope, 'cancelled', {
+        answer: `No answer: the request was cancelled after ${seconds} s.`,
+        picture: `Nothing to draw: the request was cancelled after ${seconds} s.`,
+      });
       return;
     }
     if (!endBusy(busy, 'error', 'Failed.')) return;
-    if (error instanceof ApiError) {
-      showError(error, error.fieldMap || {});
-      setProgress('error', error.status ? `Error ${error.status} · ${error.code}` : `Error · ${error.code}`);
-      if (error.status === 0 && error.code === 'network_error') updateServerStatus(false);
-    } else if (error instanceof ShaderError) {
-      showPreviewError('The GPU refused the shader:', error.log);
-      setProgress('error', 'The shader did not compile.');
-    } else {
-      ui.generalError.textContent = String(error.message || error);
-      ui.generalError.hidden = false;
-      console.error(error);
-    }
+    const why = error instanceof ApiError ? `${error.code}: ${error.message}` : error instanceof ShaderError ? 'the GPU refused the shader' : String(error.message || error);
+    clearReplaced(busy, scope, 'failed', { answer: `No answer: the request failed (${why}).`, picture: `Nothing to draw: ${why}.` });
+    showFailure(error);
   }
 }
 
-const PARAMETRIC_FIELDS = { x: 'x', y: 'y', z: 'z', domain: 'domain', tolerance: 'tolerance', box: 'box' };
+// Shows why a request failed: beside its input, under the inputs, or on the stage.
+function showFailure(error) {
+  if (error instanceof ApiError) {
+    showError(error, error.fieldMap || {});
+    setProgress('error', error.status ? `Error ${error.status} · ${error.code}` : `Error · ${error.code}`);
+    if (error.status === 0 && error.code === 'network_error') updateServerStatus(false);
+  } else if (error instanceof ShaderError) {
+    showPreviewError('The GPU refused the shader:', error.log);
+    setProgress('error', 'The shader did not compile.');
+  } else {
+    ui.generalError.textContent = String(error.message || error);
+    ui.generalError.hidden = false;
+    console.error(error);
+  }
+}
+
+// The server's field names -> this page's inputs ("parameters" is the params input).
+const PARAMETRIC_FIELDS = { params: 'params', parameters: 'params', x: 'x', y: 'y', z: 'z', domain: 'domain', tolerance: 'tolerance', box: 'box' };
 
 function submitParametric() {
   // Sent as typed (the parser skips spaces), so that error positions index the input.
@@ -544,10 +680,11 @@ function submitParametric() {
   const z = ui.inputs.z.value.trim() ? ui.inputs.z.value : '';
   const name = surfaceName();
   return run('Implicitizing…', async (busy) => {
-    let box, domain, tolerance = null;
+    let box, domain, parameters, tolerance = null;
     try {
+      parameters = parseParameters(ui.inputs.params.value);
       box = parseBox(ui.inputs.box.value);
-      domain = parseDomain(ui.inputs.domain.value, z ? 2 : 1);
+      domain = parseDomain(ui.inputs.domain.value, parameters);
       // Surfaces only: a plane curve is always exact.
       if (z) tolerance = parseTolerance(ui.inputs.tolerance.value);
     } catch (e) {
@@ -557,15 +694,21 @@ function submitParametric() {
     const started = performance.now();
     let result;
     try {
-      result = await implicitize({ x, y, z, method: ui.method.value, timeoutMs: Number(ui.timeout.value) }, { signal: busy.controller.signal });
+      result = await implicitize({ x, y, z, parameters, method: ui.method.value, timeoutMs: Number(ui.timeout.value) }, { signal: busy.controller.signal });
     } catch (e) {
       if (e instanceof ApiError) e.fieldMap = PARAMETRIC_FIELDS;
+      // A name the field does not list: most likely the field is still s, t.
+      if (e.code === 'unknown_variable') e.hint = 'the parameters field lists the names the coordinates may use';
       throw e;
     }
+    busy.controller.signal.throwIfAborted(); // cancelled as the answer arrived
     showParametricResult(result, performance.now() - started);
+    const source = { x, y, z, parameters, domain, tolerance };
+    busy.answered = true;
+    state.answered = { source, equation: result.implicit, box, name };
     try {
       // The patch itself (its domain, its shape), not the whole algebraic surface.
-      await drawSurface({ x, y, z, domain, tolerance }, result.implicit, box, name, busy);
+      await drawSurface(source, result.implicit, box, name, busy);
     } catch (e) {
       // The equation is fine; its distance function or shader is not.
       if (e instanceof ApiError) e.fieldMap = PARAMETRIC_FIELDS;
@@ -595,6 +738,8 @@ function submitImplicit() {
       throw e;
     }
     showImplicitResult(equation, answer, performance.now() - started);
+    busy.answered = true;
+    state.answered = { source: { implicit: equation }, equation, box, name };
     return `Distance function of degree ${answer.degree} (${answer.mode} mode, ${answer.shape || 'solid'}).`;
   });
 }
@@ -602,8 +747,8 @@ function submitImplicit() {
 // Mode fast/safe: the same surface, the other distance function. A running request
 // is not interrupted: it asks for the new mode, or run() redraws when it is done.
 function redrawInMode() {
-  if (!state.drawn || state.busy) return;
-  const { source, equation, box, name } = state.drawn;
+  if (!state.answered || state.busy) return;
+  const { source, equation, box, name } = state.answered;
   run('Building the distance function…', async (busy) => {
     try {
       await drawSurface(source, equation, box, name, busy);
@@ -612,7 +757,24 @@ function redrawInMode() {
       throw e;
     }
     return `Distance function in ${currentMode()} mode (shape ${ui.shape.value}).`;
-  });
+  }, 'preview');
+}
+
+// ---------------------------------------------------------------- parameters
+
+/// Labels the coordinates x(u,v), y(u,v), z(u,v) and the domain's numbers (u₀, u₁, v₀,
+/// v₁) with the names in the parameters field, as typed.
+function labelParameters() {
+  const names = itemsOf(ui.inputs.params.value).map((p) => p.value);
+  for (const label of ui.coordinateLabels) {
+    label.replaceChildren();
+    names.forEach((name, i) => {
+      const v = document.createElement('var');
+      v.textContent = name;
+      label.append(...(i ? [',', v] : [v]));
+    });
+  }
+  ui.domainNames.textContent = domainNames(names);
 }
 
 // ---------------------------------------------------------------- tabs, examples
@@ -657,6 +819,8 @@ function applyExample(name, { submit = true } = {}) {
   const example = state.examples.find((e) => e.name === name);
   if (!example) return;
   ui.examples.value = name;
+  ui.inputs.params.value = (example.parameters || DEFAULT_PARAMETERS).join(', ');
+  labelParameters();
   ui.inputs.x.value = example.x;
   ui.inputs.y.value = example.y;
   ui.inputs.z.value = example.z || '';
@@ -677,7 +841,7 @@ ui.inputs.tolerance.addEventListener('input', () => {
     $('tolerance-error').hidden = true;
   }
 });
-for (const name of ['x', 'y', 'z', 'domain', 'equation']) {
+for (const name of ['params', 'x', 'y', 'z', 'domain', 'equation']) {
   ui.inputs[name].addEventListener('input', () => {
     ui.examples.value = '';
     if (ui.inputs[name].getAttribute('aria-invalid')) {
@@ -686,6 +850,7 @@ for (const name of ['x', 'y', 'z', 'domain', 'equation']) {
     }
   });
 }
+ui.inputs.params.addEventListener('input', labelParameters);
 ui.inputs.box.addEventListener('input', () => {
   state.boxFromExample = false;
   ui.inputs.box.removeAttribute('aria-invalid');
@@ -796,6 +961,7 @@ function readAddress() {
 }
 
 async function start() {
+  labelParameters(); // the field may hold what the browser restored
   const address = readAddress();
   setMode(address.input);
   checkHealth().then(updateServerStatus);

@@ -311,7 +311,7 @@ ${solid ? `  if (finite) colour = mix(colour, vec3(0.99, 0.87, 0.72), clamp(0.5 
 /// The preview on one canvas. Create it with Preview.create(canvas) (null when WebGL2
 /// is unavailable), give it a surface with setSurface(), and it redraws by itself
 /// when the camera, the size or the settings change. The canvas's data- attributes
-/// say what is on it (data-state: idle, compiling, rendering, done, error;
+/// say what is on it (data-state: idle, compiling, rendering, done, error, empty;
 /// data-frame counts finished images; data-eye, data-target (a curve: data-view, its
 /// centre and pixels per unit), data-width, data-height, data-aa, data-function,
 /// data-box, data-dimension, data-shape and data-sides ("two": a sheet drawn
@@ -340,6 +340,7 @@ export class Preview {
     const info = gl.getExtension('WEBGL_debug_renderer_info');
     this.rendererName = info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
     this.surface = null; // {glsl, functionName, box, uniforms}
+    this.lastView = null; // {dimension, box} of the last surface set, cleared or not
     this.program = null;
     this.locations = null;
     this.generation = 0;
@@ -429,11 +430,13 @@ export class Preview {
       if (u.type === 'vec3' && Array.isArray(u.default)) gl.uniform3fv(location, u.default);
       else if (typeof u.default === 'number') gl.uniform1f(location, u.default);
     }
+    // The camera stays for a surface in the same box as the last one, even across a clear().
     const sameBox =
-      this.surface &&
-      this.surface.dimension === surface.dimension &&
-      JSON.stringify(this.surface.box) === JSON.stringify(surface.box);
+      this.lastView &&
+      this.lastView.dimension === surface.dimension &&
+      JSON.stringify(this.lastView.box) === JSON.stringify(surface.box);
     this.surface = surface;
+    this.lastView = { dimension: surface.dimension, box: surface.box };
     if (!(keepCamera || sameBox) || !(surface.dimension === 2 ? this.plane : this.camera)) this.resetView({ redraw: false });
     this.#startImage(true);
   }
@@ -443,6 +446,30 @@ export class Preview {
   cancelPending() {
     this.generation += 1;
     if (this.program && !this.work) this.#startImage(false);
+  }
+
+  /// Takes the surface off the canvas, so that it never shows a picture that does not
+  /// answer the page's current input: a surface being compiled is given up (its
+  /// setSurface rejects with AbortError), the image in progress stops, and the canvas
+  /// is filled with the tracer's background grey. data-state becomes "empty" and the
+  /// attributes that described the last image (data-function, data-box, data-eye, ...)
+  /// are removed; data-frame keeps counting.
+  clear() {
+    const gl = this.gl;
+    this.generation += 1;
+    this.work = null;
+    if (this.program) gl.deleteProgram(this.program);
+    this.program = null;
+    this.surface = null;
+    if (!this.contextLost) {
+      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+      gl.disable(gl.SCISSOR_TEST);
+      gl.clearColor(0.95, 0.95, 0.95, 1); // the shaders' background (fragmentShader)
+      gl.clear(gl.COLOR_BUFFER_BIT);
+    }
+    const d = this.canvas.dataset;
+    for (const key of ['dimension', 'shape', 'sides', 'view', 'eye', 'target', 'width', 'height', 'aa', 'function', 'box']) delete d[key];
+    this.#setState('empty');
   }
 
   /// AA×AA samples per pixel (1 to 8).

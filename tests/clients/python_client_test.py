@@ -98,6 +98,24 @@ class LibraryTest(unittest.TestCase, PngChecks):
         self.assertIs(answer["verified"], True)
         self.assertIn("singular", answer["reproduce"])
 
+    def test_parameters_name_and_order_the_domain(self):
+        # Issue 20: the parameters, as the JSON API takes them, name the parametrization's
+        # variables and order the domain's intervals (t in [0, 1/2], s in [-1, 1]: the
+        # box of x = s spans [-1, 1], that of y = t [0, 1/2]).
+        answer = self.client.sdf(x="s", y="t", z="s*t", parameters=["t", "s"], domain=[0, "1/2", -1, 1])
+        self.assertLess(answer["box"][0], -0.99)
+        self.assertLess(answer["box"][4], 0.51)
+        self.assertGreater(answer["box"][1], -0.01)
+        answer = self.client.implicitize("u", "v", "u^2-v^2", parameters=["u", "v"])
+        self.assertEqual(answer["implicit"], "x^2-y^2-z")
+        with self.assertRaises(ic.ImplicitizerError) as caught:
+            self.client.implicitize("u", "w", "u*w", parameters=["u", "v"])
+        self.assertEqual((caught.exception.code, caught.exception.field, caught.exception.position, caught.exception.status),
+                         ("unknown_variable", "y", 0, 400))
+        with self.assertRaises(ic.ImplicitizerError) as caught:
+            self.client.implicitize("u", "v", "u*v", parameters=["u", "z"])
+        self.assertEqual((caught.exception.code, caught.exception.field), ("parameter_is_space_variable", "parameters"))
+
     def test_implicitize_torus_is_the_readme_equation(self):
         answer = self.client.implicitize(TORUS["x"], TORUS["y"], TORUS["z"])
         self.assertEqual(answer["implicit"], TORUS_EQUATION)
@@ -313,6 +331,16 @@ class CommandLineTest(unittest.TestCase, PngChecks):
             result = self.run_client("sdf", *patch, "--tolerance", bad)
             self.assertEqual(result.returncode, 3, result.stderr)
             self.assertIn("invalid_tolerance", result.stderr)
+
+    def test_params_option_is_the_parameters_list(self):
+        # Issue 20: --params is the JSON API's parameters, errors exit 3 with a caret.
+        result = self.run_client("implicitize", "--x", "u", "--y", "w", "--z", "u*w", "--params", "u, v")
+        self.assertEqual(result.returncode, 3, result.stderr)
+        self.assertIn("unknown_variable at position 0 in y", result.stderr)
+        self.assertIn("  y = w\n      ^", result.stderr)
+        glsl = self.assert_ok(self.run_client("sdf", "--x", "u", "--y", "v", "--z", "u*v", "--params", "v,u",
+                                              "--domain", "0,1/2,-1,1", "--json"))
+        self.assertLess(json.loads(glsl)["box"][4], 0.51)
 
     def test_implicitize_plain_and_json(self):
         self.assertEqual(self.assert_ok(self.run_client(

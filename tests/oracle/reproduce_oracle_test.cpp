@@ -2,8 +2,8 @@
 // (reproduce_scripts(), the answer's "reproduce") run unchanged in real
 // Singular and Macaulay2, print exactly one line, the implicit equation, and that
 // equation is ours up to a rational factor. Covers polynomial and rational surfaces,
-// rational coefficients (enneper) and parameters the scripts must rename because the
-// systems reserve their names.
+// rational coefficients (enneper), parameters the scripts must rename because the
+// systems reserve their names, and trigonometric and hyperbolic inputs (converted).
 
 #include <gtest/gtest.h>
 
@@ -34,6 +34,14 @@ std::vector<testing::Surface> reproduce_surfaces() {
   // A plane curve (no z): the folium of Descartes, answered by Sylvester's resultant;
   // the scripts eliminate t and w in the ring (w, t, x, y).
   out.push_back({"plane_curve_folium", "3*t/(1+t^3)", "3*t^2/(1+t^3)", "", 3});
+  // Issue 20: trigonometric and hyperbolic inputs. The scripts hold the rational form
+  // (tan(θ/2), exp(θ)), so Singular and Macaulay2 check the conversion as well.
+  out.push_back({"trig_sphere", "cos(u)*cos(v)", "cos(u)*sin(v)", "sin(u)", 2});
+  out.push_back({"trig_torus", "(2+cos(v))*cos(u)", "(2+cos(v))*sin(u)", "sin(v)", 4});
+  out.push_back({"hyperbolic_hyperboloid", "cosh(u)*cos(v)", "cosh(u)*sin(v)", "sinh(u)", 2});
+  out.push_back({"trig_curve_double_angle", "cos(2*t)", "sin(t)", "", 2});
+  out.push_back({"trig_astroid", "cos(t)^3", "sin(t)^3", "", 6});
+  out.push_back({"trig_multiple_angles", "cos(u+2*v)", "sin(u-v)", "tan(v)", 0});
   return out;
 }
 
@@ -71,6 +79,10 @@ class ReproduceOracle : public ::testing::TestWithParam<testing::Surface> {
       EXPECT_EQ(result.degree, s.degree);
     }
     ReproduceScripts scripts = reproduce_scripts(p);
+    if (s.name.rfind("trig_", 0) == 0 || s.name.rfind("hyperbolic_", 0) == 0) {
+      EXPECT_FALSE(p.substitutions.empty());
+      EXPECT_NE(scripts.singular.find("made rational by"), std::string::npos) << scripts.singular;
+    }
     if (s.name == "reserved_parameter_names") {
       EXPECT_NE(scripts.singular.find("(w,t1,t2,x,y,z)"), std::string::npos) << scripts.singular;
       EXPECT_NE(scripts.macaulay2.find("[w,t1,t2,x,y,z]"), std::string::npos) << scripts.macaulay2;

@@ -45,6 +45,28 @@ TEST(ExpressionErrors, MissingOperator) {
   EXPECT_TRUE(rejects("2^2x", "missing_operator", 3));
 }
 
+// A name before '(' is a call: never missing_operator, and the error names the function.
+TEST(ExpressionErrors, FunctionCallsAreNamedNotMissingOperators) {
+  EXPECT_TRUE(rejects("sqrt(s)", "function_not_rational", 0));
+  EXPECT_TRUE(rejects("2*exp(s)", "function_not_rational", 2));
+  EXPECT_TRUE(rejects("1+log(t)", "function_not_rational", 2));
+  EXPECT_TRUE(rejects("ln(t)", "function_not_rational", 0));
+  EXPECT_TRUE(rejects("s*foo(t)", "unknown_function", 2));
+  EXPECT_TRUE(rejects("s (t)", "unknown_function", 0));
+  EXPECT_TRUE(rejects("acos(t)", "unknown_function", 0));
+  // The name is checked before its argument, whatever is wrong inside.
+  EXPECT_TRUE(rejects("sqrt(s+)", "function_not_rational", 0));
+  EXPECT_TRUE(rejects("cos(s", "missing_parenthesis", 3));
+  EXPECT_TRUE(rejects("cos()", "unexpected_token", 4));
+  EXPECT_TRUE(rejects("cos(s t)", "missing_operator", 6));
+  try {
+    parse_expression("s*sqrt(t)");
+    FAIL() << "sqrt accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'sqrt'"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ExpressionErrors, MissingParenthesisPointsAtTheOpeningOne) {
   EXPECT_TRUE(rejects("(x+1", "missing_parenthesis", 0));
   EXPECT_TRUE(rejects("x*(y+(z-1)", "missing_parenthesis", 2));
@@ -288,6 +310,27 @@ TEST(Identifier, FollowsTheContractSyntaxInAscii) {
   EXPECT_FALSE(is_identifier("s-t"));
   EXPECT_FALSE(is_identifier("\xe9t"));
   EXPECT_FALSE(is_identifier("t\xc3\xa9"));
+}
+
+TEST(ExpressionTree, CallsHoldTheirNameAndOneArgument) {
+  auto e = parse_expression("2cos(2*u+v)^3");
+  ASSERT_EQ(e->kind, Kind::product);
+  const Expression& power = *e->children[1];
+  ASSERT_EQ(power.kind, Kind::power);
+  EXPECT_EQ(power.exponent, 3u);
+  const Expression& call = *power.children[0];
+  ASSERT_EQ(call.kind, Kind::call);
+  EXPECT_EQ(call.name, "cos");
+  EXPECT_EQ(call.position, 1u);
+  ASSERT_EQ(call.children.size(), 1u);
+  EXPECT_EQ(call.children[0]->kind, Kind::sum);
+  for (const char* f : {"cos", "sin", "tan", "cosh", "sinh", "tanh"}) {
+    EXPECT_TRUE(is_function_name(f));
+    EXPECT_EQ(parse_expression(std::string(f) + "(u)")->kind, Kind::call);
+  }
+  // A function's name is not a parameter; a known name without '(' stays an identifier.
+  EXPECT_EQ(collect_identifiers(*parse_expression("cos(u)*sinh(v)")), (std::vector<std::string>{"u", "v"}));
+  EXPECT_EQ(parse_expression("cos")->kind, Kind::identifier);
 }
 
 }  // namespace

@@ -228,5 +228,17 @@ TEST_F(RationalParserTest, ZeroDenominatorAtItsSlash) {
   EXPECT_TRUE(throws_input_error([&] { parse("s/q"); }, "unknown_variable", 2));
 }
 
+// Calls are the parametrization's business (trigonometric_substitution.hpp): an
+// evaluator without a CallEvaluator refuses them at the function's name.
+TEST_F(ParserTest, EvaluatorsRefuseCallsUnlessGivenAnEvaluator) {
+  EXPECT_TRUE(throws_input_error([&] { parse_polynomial("x+cos(y)", ring_); }, "function_not_allowed", 2));
+  EXPECT_TRUE(throws_input_error([&] { evaluate_rational_function(*parse_expression("1/sin(x)"), ring_); },
+                                 "function_not_allowed", 2));
+  const CallEvaluator y_for_every_call = [&](const Expression&) { return RationalFunction(y_); };
+  const RationalFunction f =
+      evaluate_rational_function(*parse_expression("x/cos(z)^2"), ring_, Budget(), y_for_every_call);
+  EXPECT_EQ(to_string(f), "x/(y^2)");
+}
+
 }  // namespace
 }  // namespace implicitizer

@@ -110,5 +110,20 @@ TEST(Printer, PrintedTermsAreStrictlyDecreasing) {
   }
 }
 
+// A rational function prints as text that parses back to it: a denominator that is
+// not a number keeps its parentheses (n/2*e would be (n/2)*e).
+TEST(Printer, RationalFunctionsParseBack) {
+  const RingPtr ring = Ring::make({"s", "t"});
+  for (const char* text : {"s^2+t", "(1-t^2)/(1+t^2)", "2*t/(1+t^2)", "(s^2-1)/(2*s)", "s/2", "-t^2/(3*s)", "1/s"}) {
+    SCOPED_TRACE(text);
+    const RationalFunction f = evaluate_rational_function(*parse_expression(text), ring);
+    const std::string printed = to_string(f);
+    const RationalFunction back = evaluate_rational_function(*parse_expression(printed), ring);
+    EXPECT_EQ(back.numerator(), f.numerator()) << printed;
+    EXPECT_EQ(back.denominator(), f.denominator()) << printed;
+  }
+  EXPECT_EQ(to_string(evaluate_rational_function(*parse_expression("(s^2-1)/(2*s)"), ring)), "(1/2*s^2-1/2)/(s)");
+}
+
 }  // namespace
 }  // namespace implicitizer

@@ -615,6 +615,7 @@ test('a long request shows its elapsed time and Cancel stops it, here and on the
   assert.ok(hard, 'tp_33 in surfaces_hard.json');
   const cancelledBefore = await metric('implicitizer_computations_cancelled_total');
   await page.click('#tab-parametric');
+  await page.fill('#params', 's, t'); // the last example, a plane curve, named only t
   await page.fill('#x', hard.x);
   await page.fill('#y', hard.y);
   await page.fill('#z', hard.z);

@@ -1,5 +1,6 @@
 #include "implicitizer/implicitization/parametrization.hpp"
 
+#include <algorithm>
 #include <set>
 #include <stdexcept>
 
@@ -88,7 +89,13 @@ Parametrization parse_parametrization(const std::vector<std::string>& texts,
     }
   }
   RingPtr ring = Ring::make(names);
-  Parametrization result{ring, {}, texts};
+  if (std::any_of(trees.begin(), trees.end(), [](const auto& t) { return contains_call(*t); })) {
+    std::vector<const Expression*> roots;
+    for (const auto& t : trees) roots.push_back(t.get());
+    RationalizedCoordinates rational = substitute_trigonometric(roots, fields, ring, budget);
+    return {rational.parameter_ring, std::move(rational.coordinates), texts, std::move(rational.substitutions)};
+  }
+  Parametrization result{ring, {}, texts, {}};
   for (std::size_t i = 0; i < count; ++i) {
     try {
       result.coordinates.push_back(evaluate_rational_function(*trees[i], ring, budget));

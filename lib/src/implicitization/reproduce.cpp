@@ -75,7 +75,11 @@ std::string comment_of(const Parametrization& p) {
   const std::vector<std::string> space = coordinate_names(p.coordinates.size());
   std::vector<std::string> parts;
   for (std::size_t v = 0; v < space.size(); ++v) parts.push_back(space[v] + " = " + p.sources[v]);
-  return join(parts, ", ");
+  if (p.substitutions.empty()) return join(parts, ", ");
+  // The ideal below is of the rational form: say which substitution made it.
+  std::vector<std::string> substitutions;
+  for (const auto& s : p.substitutions) substitutions.push_back(to_string(s));
+  return join(parts, ", ") + ", made rational by " + join(substitutions, ", ");
 }
 
 std::string singular_script_of(const Parametrization& p, const ScriptIdeal& ideal) {

@@ -36,8 +36,8 @@ class Lexer {
   Lexer(std::string_view text, const ParseParams& limits) : text_(text), limits_(limits) {}
 
   Token next() {
-    while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\n' ||
-                                   text_[pos_] == '\r')) {
+    while (pos_ < text_.size() &&
+           (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\n' || text_[pos_] == '\r')) {
       ++pos_;
     }
     Token t;
@@ -177,7 +177,8 @@ std::unique_ptr<Expression> wrap(Expression::Kind kind, std::size_t position, st
 //   product := unary (('*'|'/') unary)*
 //   unary   := ('-'|'+') unary | power
 //   power   := atom [('^'|'**') INTEGER]
-//   atom    := NUMBER [IDENTIFIER directly after it: a product] | IDENTIFIER | '(' sum ')'
+//   atom    := NUMBER [IDENTIFIER directly after it: a product] | IDENTIFIER | call | '(' sum ')'
+//   call    := IDENTIFIER '(' sum ')'
 // so `^` binds tighter than unary minus and than `*` and `/`.
 class Parser {
  public:
@@ -264,8 +265,7 @@ class Parser {
     advance();
     if (current_.kind == Token::Kind::end) throw InputError("unexpected_end", "expected an exponent", current_.start);
     const bool integer_literal =
-        current_.kind == Token::Kind::number &&
-        current_.text.find_first_not_of("0123456789") == std::string_view::npos;
+        current_.kind == Token::Kind::number && current_.text.find_first_not_of("0123456789") == std::string_view::npos;
     if (!integer_literal) {
       throw InputError("exponent_not_integer", "an exponent must be a non-negative integer literal", current_.start);
     }
@@ -306,29 +306,64 @@ class Parser {
         auto v = make(Expression::Kind::identifier, t.start);
         v->name = std::string(t.text);
         advance();
+        // A name directly before '(' is a call, never a missing '*': `s(t)` was never
+        // valid, and naming the function says what is wrong with `sqrt(s)`.
+        if (current_.kind == Token::Kind::lparen) return call(std::move(v));
         return v;
       }
-      case Token::Kind::lparen: {
-        DepthGuard guard(depth_, limits_.max_depth, t.start);
-        advance();
-        if (current_.kind == Token::Kind::rparen) {
-          throw InputError("unexpected_token", "empty parentheses", current_.start);
-        }
-        auto inner = sum();
-        if (current_.kind != Token::Kind::rparen) {
-          if (current_.kind == Token::Kind::end) {
-            throw InputError("missing_parenthesis", "'(' is never closed", t.start);
-          }
-          throw missing_operator();
-        }
-        advance();
-        return inner;
-      }
+      case Token::Kind::lparen:
+        return parenthesized(t);
       case Token::Kind::end:
         throw InputError("unexpected_end", "the expression ends where an operand was expected", t.start);
       default:
         throw InputError("unexpected_token", "expected a number, a name or '(' but found '" + std::string(t.text) + "'",
                          t.start);
+    }
+  }
+
+  // '(' sum ')' with the '(' token `open` current (a copy: advance() replaces current_).
+  std::unique_ptr<Expression> parenthesized(const Token open) {
+    DepthGuard guard(depth_, limits_.max_depth, open.start);
+    advance();
+    if (current_.kind == Token::Kind::rparen) {
+      throw InputError("unexpected_token", "empty parentheses", current_.start);
+    }
+    auto inner = sum();
+    if (current_.kind != Token::Kind::rparen) {
+      if (current_.kind == Token::Kind::end) {
+        throw InputError("missing_parenthesis", "'(' is never closed", open.start);
+      }
+      throw missing_operator();
+    }
+    advance();
+    return inner;
+  }
+
+  // `name` followed by the current '(' token. The name is checked before its argument
+  // is read, so that the first error reported is the function's.
+  std::unique_ptr<Expression> call(std::unique_ptr<Expression> name) {
+    check_function_name(name->name, name->position);
+    auto node = make(Expression::Kind::call, name->position);
+    node->name = std::move(name->name);
+    node->children.push_back(parenthesized(current_));
+    return node;
+  }
+
+  static void check_function_name(const std::string& name, std::size_t position) {
+    static const std::set<std::string, std::less<>> not_rational = {"sqrt", "exp", "log", "ln"};
+    if (not_rational.count(name)) {
+      throw InputError("function_not_rational",
+                       "'" + name +
+                           "' has no exact rational form: only cos, sin, tan, cosh, sinh and tanh of integer "
+                           "combinations of the parameters can be converted",
+                       position);
+    }
+    if (!is_function_name(name)) {
+      throw InputError("unknown_function",
+                       "unknown function '" + name +
+                           "' (the functions are cos, sin, tan, cosh, sinh, tanh; write a product as '" + name +
+                           "*(...)')",
+                       position);
     }
   }
 
@@ -364,6 +399,10 @@ std::vector<std::string> collect_identifiers(const std::vector<std::unique_ptr<E
   std::set<std::string> seen;
   for (const auto& e : expressions) collect(*e, out, seen);
   return out;
+}
+
+bool is_function_name(std::string_view name) {
+  return name == "cos" || name == "sin" || name == "tan" || name == "cosh" || name == "sinh" || name == "tanh";
 }
 
 bool is_identifier(std::string_view name, std::size_t max_length) {

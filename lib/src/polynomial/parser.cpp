@@ -9,9 +9,17 @@ namespace {
 InputError unknown_variable(const Expression& e, const Ring& ring) {
   std::string names;
   for (const auto& v : ring.variables()) names += (names.empty() ? "" : ", ") + v;
-  return InputError("unknown_variable", "unknown variable '" + e.name + "' (the variables are " +
-                                            (names.empty() ? std::string("none") : names) + ")",
-                    e.position);
+  return InputError(
+      "unknown_variable",
+      "unknown variable '" + e.name + "' (the variables are " + (names.empty() ? std::string("none") : names) + ")",
+      e.position);
+}
+
+InputError function_not_allowed(const Expression& e) {
+  return InputError(
+      "function_not_allowed",
+      "the function '" + e.name + "' is accepted only in a parametrization's coordinates (x, y, z in the parameters)",
+      e.position);
 }
 
 Polynomial polynomial_of(const Expression& e, const RingPtr& ring, const Budget& budget) {
@@ -39,8 +47,8 @@ Polynomial polynomial_of(const Expression& e, const RingPtr& ring, const Budget&
           const Polynomial d = polynomial_of(*c->children[0], ring, budget);
           if (d.is_zero()) throw InputError("division_by_zero", "division by zero", c->position);
           if (!d.is_constant()) {
-            throw InputError("non_constant_denominator",
-                             "a polynomial may only be divided by a non-zero constant", c->position);
+            throw InputError("non_constant_denominator", "a polynomial may only be divided by a non-zero constant",
+                             c->position);
           }
           p = p.divided_by(d.coefficient(0));
         } else {
@@ -63,11 +71,14 @@ Polynomial polynomial_of(const Expression& e, const RingPtr& ring, const Budget&
     }
     case Kind::power:
       return polynomial_of(*e.children[0], ring, budget).pow(e.exponent, budget);
+    case Kind::call:
+      throw function_not_allowed(e);
   }
   throw std::logic_error("unknown expression kind");
 }
 
-RationalFunction rational_function_of(const Expression& e, const RingPtr& ring, const Budget& budget) {
+RationalFunction rational_function_of(const Expression& e, const RingPtr& ring, const Budget& budget,
+                                      const CallEvaluator& calls) {
   using Kind = Expression::Kind;
   switch (e.kind) {
     case Kind::number:
@@ -75,26 +86,29 @@ RationalFunction rational_function_of(const Expression& e, const RingPtr& ring, 
       return RationalFunction(polynomial_of(e, ring, budget));
     case Kind::sum: {
       RationalFunction s{Polynomial(ring)};
-      for (const auto& c : e.children) s = s + rational_function_of(*c, ring, budget);
+      for (const auto& c : e.children) s = s + rational_function_of(*c, ring, budget, calls);
       budget.check_terms(s.numerator().num_terms(), "parsing");
       return s;
     }
     case Kind::product: {
       RationalFunction p(Polynomial::constant(ring, Rational(1)));
-      for (const auto& c : e.children) p = p * rational_function_of(*c, ring, budget);
+      for (const auto& c : e.children) p = p * rational_function_of(*c, ring, budget, calls);
       return p;
     }
     case Kind::negate:
-      return -rational_function_of(*e.children[0], ring, budget);
+      return -rational_function_of(*e.children[0], ring, budget, calls);
     case Kind::reciprocal: {
-      const RationalFunction d = rational_function_of(*e.children[0], ring, budget);
+      const RationalFunction d = rational_function_of(*e.children[0], ring, budget, calls);
       if (d.numerator().is_zero()) {
         throw InputError("division_by_zero", "the denominator is identically zero", e.position);
       }
       return RationalFunction(Polynomial::constant(ring, Rational(1))) / d;
     }
     case Kind::power:
-      return rational_function_of(*e.children[0], ring, budget).pow(e.exponent, budget);
+      return rational_function_of(*e.children[0], ring, budget, calls).pow(e.exponent, budget);
+    case Kind::call:
+      if (!calls) throw function_not_allowed(e);
+      return calls(e);
   }
   throw std::logic_error("unknown expression kind");
 }
@@ -105,8 +119,9 @@ Polynomial evaluate_polynomial(const Expression& e, const RingPtr& ring, const B
   return polynomial_of(e, ring, budget);
 }
 
-RationalFunction evaluate_rational_function(const Expression& e, const RingPtr& ring, const Budget& budget) {
-  return rational_function_of(e, ring, budget);
+RationalFunction evaluate_rational_function(const Expression& e, const RingPtr& ring, const Budget& budget,
+                                            const CallEvaluator& calls) {
+  return rational_function_of(e, ring, budget, calls);
 }
 
 Polynomial parse_polynomial(std::string_view text, const RingPtr& ring, const Budget& budget,

@@ -34,4 +34,14 @@ std::string to_string(const Polynomial& p) {
   return out;
 }
 
+std::string to_string(const RationalFunction& f) {
+  const std::string n = to_string(f.numerator());
+  if (f.is_polynomial() && f.denominator().leading_coefficient() == Rational(1)) return n;
+  // A single-term numerator needs no parentheses (a/b·c/d is one product chain), a
+  // denominator does unless it is a number: n/2*e would read as (n/2)·e.
+  const std::string numerator = f.numerator().num_terms() > 1 ? "(" + n + ")" : n;
+  const std::string d = to_string(f.denominator());
+  return numerator + "/" + (f.denominator().is_constant() ? d : "(" + d + ")");
+}
+
 }  // namespace implicitizer

@@ -59,7 +59,8 @@ ParameterDomain checked_domain(const PolynomialLeafSource& source, const Paramet
           .in_field("domain");
     }
   }
-  return ParameterDomain{source.domain};
+  // A domain in angles (cos(u), ...) is one in the rational parameters tan(u/2), ...
+  return map_parameter_domain(parametrization.substitutions, *ring, ParameterDomain{source.domain});
 }
 
 // The patch of `source`: its domain (the default one when the source names none,

@@ -117,6 +117,36 @@ void write_stats(Writer& w, const ImplicitizeResult& result) {
   w.EndObject();
 }
 
+// "substitution" and "rational_parametrization": how the input was made rational and
+// the form that was implicitized (only for an input with functions).
+void write_substitution(Writer& w, const ImplicitizeAnswer& answer) {
+  w.Key("substitution");
+  w.StartArray();
+  for (const auto& s : answer.substitutions) {
+    w.StartObject();
+    w.Key("parameter");
+    write_string(w, s.parameter);
+    w.Key("variable");
+    write_string(w, s.variable);
+    w.Key("kind");
+    write_string(w, to_string(s.kind));
+    w.Key("formula");
+    write_string(w, to_string(s));
+    w.EndObject();
+  }
+  w.EndArray();
+  w.Key("rational_parametrization");
+  w.StartObject();
+  w.Key("parameters");
+  json::write_strings(w, answer.rational_parameters);
+  const std::vector<std::string> names = coordinate_names(answer.rational_coordinates.size());
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    w.Key(names[i].c_str());
+    write_string(w, answer.rational_coordinates[i]);
+  }
+  w.EndObject();
+}
+
 }  // namespace
 
 ImplicitizeRequest decode_implicitize_request(std::string_view body, const JsonParams& limits) {
@@ -157,6 +187,7 @@ std::string encode_implicitize_response(const ImplicitizeAnswer& answer) {
     write_milliseconds(w, result.elapsed_ms);
     w.Key("stats");
     write_stats(w, result);
+    if (!answer.substitutions.empty()) write_substitution(w, answer);
     w.Key("reproduce");
     w.StartObject();
     w.Key("singular");

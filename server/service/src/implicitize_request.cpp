@@ -1,6 +1,7 @@
 #include "implicitizer/service/implicitize_request.hpp"
 
 #include "implicitizer/implicitization/parametrization.hpp"
+#include "implicitizer/polynomial/printer.hpp"
 
 namespace implicitizer {
 
@@ -16,8 +17,13 @@ ImplicitizeAnswer answer_implicitize_request(const ImplicitizeRequest& request, 
   options.budget = std::move(budget);
   options.buchberger = variant;
   options.modular_groebner = request.modular;
-  ImplicitizeResult result = implicitize(parametrization, options);
-  return {std::move(result), reproduce_scripts(parametrization)};
+  ImplicitizeAnswer answer{implicitize(parametrization, options), reproduce_scripts(parametrization), {}, {}, {}};
+  if (!parametrization.substitutions.empty()) {
+    answer.substitutions = parametrization.substitutions;
+    answer.rational_parameters = parametrization.parameter_ring->variables();
+    for (const auto& c : parametrization.coordinates) answer.rational_coordinates.push_back(to_string(c));
+  }
+  return answer;
 }
 
 }  // namespace implicitizer

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "implicitizer/core/budget.hpp"
+#include "implicitizer/implicitization/trigonometric_substitution.hpp"
 #include "implicitizer/polynomial/rational_function.hpp"
 
 namespace implicitizer {
@@ -16,9 +17,13 @@ namespace implicitizer {
 /// Two or three rational functions in the parameters, each in lowest terms: the
 /// coordinates x, y (and z) of the image.
 struct Parametrization {
-  RingPtr parameter_ring;                      ///< the parameters, grevlex
-  std::vector<RationalFunction> coordinates;   ///< x, y and, in space, z
-  std::vector<std::string> sources;            ///< the texts they were read from
+  RingPtr parameter_ring;                     ///< the parameters, grevlex
+  std::vector<RationalFunction> coordinates;  ///< x, y and, in space, z
+  std::vector<std::string> sources;           ///< the texts they were read from
+  /// The parameters of the texts that were replaced to make them rational (empty when
+  /// the texts have no function call): `parameter_ring` then names the new parameters
+  /// (trigonometric_substitution.hpp).
+  std::vector<ParameterSubstitution> substitutions;
 };
 
 /// ω, ξ_1, …, ξ_n with x_v = ξ_v / ω over one denominator: ω the lcm of the
@@ -35,7 +40,9 @@ std::vector<std::string> coordinate_names(std::size_t count);
 /// Throws InputError with the field ("x", "y", "z", "parameters") set:
 /// parse errors, `parameter_is_space_variable` (x, y or z used as a parameter),
 /// `unknown_variable` (an identifier not among explicit parameters),
-/// `division_by_zero` (a denominator that is identically zero).
+/// `division_by_zero` (a denominator that is identically zero), and for texts with
+/// cos, sin, tan, cosh, sinh, tanh the refusals of substitute_trigonometric(), which
+/// makes them rational (then `substitutions` says how).
 Parametrization parse_parametrization(const std::string& x, const std::string& y, const std::string& z,
                                       const std::optional<std::vector<std::string>>& parameters = std::nullopt,
                                       const Budget& budget = Budget());

@@ -37,6 +37,13 @@ struct ImplicitizeRequest {
 struct ImplicitizeAnswer {
   ImplicitizeResult result;
   ReproduceScripts reproduce;
+  /// How cos/sin/tan/cosh/sinh/tanh in the input were made rational; empty for a
+  /// rational input (then the two fields below are empty too).
+  std::vector<ParameterSubstitution> substitutions;
+  /// The rational parametrization that was implicitized: its parameters and the
+  /// coordinates x, y[, z] printed in them.
+  std::vector<std::string> rational_parameters;
+  std::vector<std::string> rational_coordinates;
 };
 
 /// Answers `request` under `budget` (the request's timeout, when present, replaces
