@@ -11,8 +11,8 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,8 +34,8 @@ constexpr std::size_t kFuzzedVariables = 12;
 
 /// Reports a broken invariant the way libFuzzer expects: print, then abort.
 [[noreturn]] void fail(const char* what, std::string_view input, const std::string& detail) {
-  std::fprintf(stderr, "parser_fuzzer: %s\n  input: %.*s\n  %s\n", what, static_cast<int>(input.size()),
-               input.data(), detail.c_str());
+  std::fprintf(stderr, "parser_fuzzer: %s\n  input: %.*s\n  %s\n", what, static_cast<int>(input.size()), input.data(),
+               detail.c_str());
   std::abort();
 }
 
