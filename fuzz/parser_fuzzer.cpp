@@ -108,9 +108,14 @@ void check_printed_rational_function(const RationalFunction& f, const RingPtr& r
   const std::string printed = to_string(f);
   std::optional<RationalFunction> g;
   try {
-    g = evaluate_rational_function(*parse_expression(printed, printed_text_limits()), ring, Budget());
+    // Reading a quotient back sums its terms as rational functions, a gcd each: for
+    // ((a+b)^9-c/(a-c))^8 (under 3000 terms) that took 9 s under ASan, near libFuzzer's
+    // -timeout. A deadline keeps the check bounded; a read that runs out is unchecked.
+    g = evaluate_rational_function(*parse_expression(printed, printed_text_limits()), ring, Budget::with_timeout(2));
   } catch (const InputError& error) {
     fail("printed rational function does not parse back", input, printed + " -> " + error.code() + ": " + error.what());
+  } catch (const LimitExceeded&) {
+    return;
   }
   if (!(g->numerator() == f.numerator() && g->denominator() == f.denominator())) {
     fail("rational function round trip is not the identity", input,
