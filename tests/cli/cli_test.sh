@@ -102,6 +102,60 @@ expect_status "bad criteria" 2 "criteria" implicitize --x s+t --y s --z t --crit
 expect_status "bad max-terms" 2 "max-terms" implicitize --x s+t --y s --z t --max-terms -3
 expect_status "stray argument" 2 "unexpected argument" implicitize --x s+t --y s --z t extra
 
+# ---- implicitize: trigonometric and hyperbolic input (issue 20) ----
+# Accepted: made rational exactly (stdout the equation, stderr the substitution and the
+# rational form); the expected equations are issue 20's, printed primitive.
+expect "trig sphere" 0 "x^2+y^2+z^2-1" implicitize --x "cos(u)*cos(v)" --y "cos(u)*sin(v)" --z "sin(u)"
+expect "trig torus" 0 "x^4+2*x^2*y^2+y^4+2*x^2*z^2+2*y^2*z^2+z^4-10*x^2-10*y^2+6*z^2+9" implicitize \
+  --x "(2+cos(v))*cos(u)" --y "(2+cos(v))*sin(u)" --z "sin(v)"
+expect "cosh/sinh hyperboloid" 0 "x^2+y^2-z^2-1" implicitize --x "cosh(u)*cos(v)" --y "cosh(u)*sin(v)" --z "sinh(u)"
+expect "double-angle curve" 0 "2*y^2+x-1" implicitize --x "cos(2*t)" --y "sin(t)"
+expect "astroid" 0 "x^6+3*x^4*y^2+3*x^2*y^4+y^6-3*x^4+21*x^2*y^2-3*y^4+3*x^2+3*y^2-1" implicitize \
+  --x "cos(t)^3" --y "sin(t)^3"
+expect "tan and named parameters" 0 "x^2*y^2+x^2-y^2" implicitize --x "sin(a)" --y "tan(a)" --params a
+expect_status "substitution on stderr" 0 "made rational by tu = tan\(u/2\), tv = tan\(v/2\)" implicitize \
+  --x "cos(u)*cos(v)" --y "cos(u)*sin(v)" --z "sin(u)"
+expect_status "rational form on stderr" 0 "z = 2\*tu/\(tu\^2\+1\)" implicitize \
+  --x "cos(u)*cos(v)" --y "cos(u)*sin(v)" --z "sin(u)"
+expect_json "substitution JSON" 0 "
+j['implicit'] == 'x^2+y^2-z^2-1' and j['verified'] is True
+and j['substitution'] == [
+  {'parameter': 'u', 'variable': 'eu', 'kind': 'exponential', 'formula': 'eu = exp(u)'},
+  {'parameter': 'v', 'variable': 'tv', 'kind': 'half_angle', 'formula': 'tv = tan(v/2)'}]
+and j['rational_parametrization']['parameters'] == ['eu', 'tv']
+and j['rational_parametrization']['z'] == '(1/2*eu^2-1/2)/(eu)'
+and 'made rational by eu = exp(u), tv = tan(v/2)' in j['reproduce']['singular']
+and 'ring r = 0, (w,eu,tv,x,y,z), dp;' in j['reproduce']['singular']" \
+  implicitize --x "cosh(u)*cos(v)" --y "cosh(u)*sin(v)" --z "sinh(u)" --json
+expect_json "rational input has no substitution" 0 "'substitution' not in j and 'rational_parametrization' not in j" \
+  implicitize --x s+t --y s --z t --json
+# --params names and orders the parameters; a name that is not among them is refused.
+expect_json "--params order" 0 "j['rational_parametrization']['parameters'] == ['tv', 'tu']" \
+  implicitize --x "cos(u)*cos(v)" --y "cos(u)*sin(v)" --z "sin(u)" --params v,u --json
+expect_status "--params missing one" 3 "unknown_variable at position 11 in x" \
+  implicitize --x "cos(u)*cos(v)" --y "cos(u)*sin(v)" --z "sin(u)" --params u
+# Refused, each with its code, the function's name and its position; never missing_operator.
+expect_status "u*cos(u)" 3 "^error: parameter_inside_and_outside at position 2 in x: .*'cos'" \
+  implicitize --x "u*cos(u)" --y "sin(u)" --z v
+expect_status "cos(s*t)" 3 "^error: nonlinear_argument at position 0 in x: .*'cos'" \
+  implicitize --x "cos(s*t)" --y "sin(t)" --z s
+expect_status "cos(u/2)" 3 "^error: non_integer_argument at position 0 in x: .*'cos'" \
+  implicitize --x "cos(u/2)" --y "sin(u)"
+expect_status "cos and cosh of u" 3 "^error: mixed_function_kinds at position 7 in x: .*'cosh'" \
+  implicitize --x "cos(u)*cosh(u)" --y "sin(u)"
+expect_status "sqrt" 3 "^error: function_not_rational at position 2 in y: .*'sqrt'" implicitize --x s --y "2*sqrt(t)" --z t
+expect_status "exp" 3 "^error: function_not_rational at position 0 in z: .*'exp'" implicitize --x s --y t --z "exp(s)"
+expect_status "log" 3 "^error: function_not_rational at position 0 in x: .*'log'" implicitize --x "log(s)" --y t --z s
+expect_status "unknown function" 3 "^error: unknown_function at position 0 in x: .*'foo'" implicitize --x "foo(s)" --y t --z s
+expect_status "function in an implicit equation" 3 "function_not_allowed at position 0" sdf --implicit "cos(x)+y"
+for refused in "u*cos(u)" "sqrt(u)" "foo(u)" "cos(u*v)"; do
+  run implicitize --x "$refused" --y u --z v
+  if grep -q missing_operator "$WORK/err"; then fail "$refused reported missing_operator"; else pass; fi
+done
+expect_json "refusal JSON" 3 "
+j['error']['code'] == 'nonlinear_argument' and j['error']['position'] == 2 and j['error']['field'] == 'z'
+and \"'sin'\" in j['error']['message']" implicitize --x s --y t --z "1+sin(s*t)" --json
+
 # A hard surface cannot finish in a millisecond: the time limit, named.
 HARD=$(python3 -c "
 import json, sys

@@ -517,6 +517,55 @@ class CommandLineTest(unittest.TestCase, PngChecks):
         self.assertIn("implicitize --x E --y E", self.assert_ok(self.run_client("-h")))
 
 
+class TrigonometricTest(unittest.TestCase):
+    """Issue 20 through the client: trigonometric and hyperbolic parametrizations are
+    answered with the substitution and the rational form; refusals raise
+    ImplicitizerError with the code, the field, the position and the function's name."""
+
+    def setUp(self):
+        self.client = ic.Client(URL, timeout=60)
+
+    def test_accepted_forms(self):
+        cases = [
+            (("cos(u)*cos(v)", "cos(u)*sin(v)", "sin(u)"), "x^2+y^2+z^2-1", ["tu = tan(u/2)", "tv = tan(v/2)"]),
+            # Parameters in order of first appearance: v comes first here.
+            (("(2+cos(v))*cos(u)", "(2+cos(v))*sin(u)", "sin(v)"), TORUS_EQUATION,
+             ["tv = tan(v/2)", "tu = tan(u/2)"]),
+            (("cosh(u)*cos(v)", "cosh(u)*sin(v)", "sinh(u)"), "x^2+y^2-z^2-1", ["eu = exp(u)", "tv = tan(v/2)"]),
+            (("cos(2*t)", "sin(t)", None), "2*y^2+x-1", ["tt = tan(t/2)"]),
+            (("cos(t)^3", "sin(t)^3", None),
+             "x^6+3*x^4*y^2+3*x^2*y^4+y^6-3*x^4+21*x^2*y^2-3*y^4+3*x^2+3*y^2-1", ["tt = tan(t/2)"]),
+        ]
+        for (x, y, z), implicit, formulas in cases:
+            answer = self.client.implicitize(x, y, z)
+            self.assertEqual(answer["implicit"], implicit, x)
+            self.assertEqual([sub["formula"] for sub in answer["substitution"]], formulas)
+            rational = answer["rational_parametrization"]
+            self.assertEqual(rational["parameters"], [f.split(" ")[0] for f in formulas])
+            self.assertIn("made rational by", answer["reproduce"]["singular"])
+
+    def test_parameters_name_and_order_the_angles(self):
+        answer = self.client.implicitize("cos(b)*cos(a)", "cos(b)*sin(a)", "sin(b)", parameters=["a", "b"])
+        self.assertEqual(answer["implicit"], "x^2+y^2+z^2-1")
+        self.assertEqual(answer["rational_parametrization"]["parameters"], ["ta", "tb"])
+
+    def test_refusals(self):
+        cases = [
+            (("u*cos(u)", "sin(u)", "v"), ("parameter_inside_and_outside", "x", 2, "cos")),
+            (("cos(s*t)", "sin(t)", "s"), ("nonlinear_argument", "x", 0, "cos")),
+            (("s", "sqrt(t)", "s"), ("function_not_rational", "y", 0, "sqrt")),
+            (("s", "t", "exp(s)"), ("function_not_rational", "z", 0, "exp")),
+            (("log(s)", "t", "s"), ("function_not_rational", "x", 0, "log")),
+            (("s", "t", "s*bar(t)"), ("unknown_function", "z", 2, "bar")),
+        ]
+        for (x, y, z), (code, field, position, name) in cases:
+            with self.assertRaises(ic.ImplicitizerError) as caught:
+                self.client.implicitize(x, y, z)
+            e = caught.exception
+            self.assertEqual((e.status, e.code, e.field, e.position), (400, code, field, position), x)
+            self.assertIn("'%s'" % name, e.message)
+
+
 if __name__ == "__main__":
     if len(sys.argv) < 2:
         sys.exit("usage: python_client_test.py PATH/TO/implicitizer-server [unittest options]")

@@ -129,5 +129,25 @@ TEST(AnswerImplicitizeRequest, PlaneCurveWithoutZ) {
   EXPECT_NE(json.find(R"("formulation":"sylvester")"), std::string::npos) << json;
 }
 
+// Issue 20: the substitution and the rational form, between stats and reproduce, only
+// for an input with functions.
+TEST(AnswerImplicitizeRequest, SaysHowFunctionsWereMadeRational) {
+  ImplicitizeRequest r;
+  r.x = "cos(2*t)";
+  r.y = "sin(t)";
+  const std::string json = encode_implicitize_response(answer_implicitize_request(r));
+  EXPECT_EQ(json.rfind(R"({"implicit":"2*y^2+x-1","degree":2,)", 0), 0u) << json;
+  EXPECT_NE(json.find(R"j("substitution":[{"parameter":"t","variable":"tt","kind":"half_angle",)j"
+                      R"j("formula":"tt = tan(t/2)"}],"rational_parametrization":{"parameters":["tt"],)j"
+                      R"j("x":"(tt^4-6*tt^2+1)/(tt^4+2*tt^2+1)","y":"2*tt/(tt^2+1)"},"reproduce":{)j"),
+            std::string::npos)
+      << json;
+  r.x = "1-2*s^2";
+  r.y = "s";
+  const std::string rational = encode_implicitize_response(answer_implicitize_request(r));
+  EXPECT_EQ(rational.find("substitution"), std::string::npos) << rational;
+  EXPECT_EQ(rational.find("rational_parametrization"), std::string::npos) << rational;
+}
+
 }  // namespace
 }  // namespace implicitizer

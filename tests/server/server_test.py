@@ -341,6 +341,65 @@ def test_input_errors(s):
     check(err.get("position") == 2 and err.get("field") == "x", "expression error position: %r" % err)
 
 
+def test_trigonometric(s):
+    """Issue 20: cos/sin/tan/cosh/sinh/tanh made rational, the answer says how; what
+    cannot be made rational is a 400 with its code, position, field and function name."""
+    accepted = [
+        ({"x": "cos(u)*cos(v)", "y": "cos(u)*sin(v)", "z": "sin(u)"}, "x^2+y^2+z^2-1", ["tu", "tv"]),
+        ({"x": "(2+cos(v))*cos(u)", "y": "(2+cos(v))*sin(u)", "z": "sin(v)", "parameters": ["u", "v"]},
+         "x^4+2*x^2*y^2+y^4+2*x^2*z^2+2*y^2*z^2+z^4-10*x^2-10*y^2+6*z^2+9", ["tu", "tv"]),
+        ({"x": "cosh(u)*cos(v)", "y": "cosh(u)*sin(v)", "z": "sinh(u)"}, "x^2+y^2-z^2-1", ["eu", "tv"]),
+        ({"x": "cos(2*t)", "y": "sin(t)"}, "2*y^2+x-1", ["tt"]),
+        ({"x": "cos(t)^3", "y": "sin(t)^3"},
+         "x^6+3*x^4*y^2+3*x^2*y^4+y^6-3*x^4+21*x^2*y^2-3*y^4+3*x^2+3*y^2-1", ["tt"]),
+    ]
+    for request, implicit, parameters in accepted:
+        status, _, body = s.post_json("/v1/implicitize", request)
+        check(status == 200 and body.get("implicit") == implicit and body.get("verified") is True,
+              "%r: %s %r" % (request, status, body))
+        rational = body.get("rational_parametrization", {})
+        check(rational.get("parameters") == parameters and all(k in rational for k in request if k in "xyz"),
+              "%r: rational parametrization %r" % (request, rational))
+        check([sub["variable"] for sub in body.get("substitution", [])] == parameters
+              and "made rational by" in body["reproduce"]["singular"], "%r: substitution %r" % (request, body))
+    # The rational parametrization given back is accepted as input and gives the same equation.
+    _, _, body = s.post_json("/v1/implicitize", accepted[0][0])
+    rational = body["rational_parametrization"]
+    status, _, again = s.post_json("/v1/implicitize", {"x": rational["x"], "y": rational["y"], "z": rational["z"],
+                                                       "parameters": rational["parameters"]})
+    check(status == 200 and again.get("implicit") == "x^2+y^2+z^2-1" and "substitution" not in again,
+          "rational form round trip: %s %r" % (status, again))
+    refused = [
+        ({"x": "u*cos(u)", "y": "sin(u)", "z": "v"}, "parameter_inside_and_outside", "x", 2, "cos"),
+        ({"x": "s", "y": "cos(s*t)", "z": "t"}, "nonlinear_argument", "y", 0, "cos"),
+        ({"x": "cos(u/2)", "y": "sin(u)"}, "non_integer_argument", "x", 0, "cos"),
+        ({"x": "cos(u)*cosh(u)", "y": "u"}, "parameter_inside_and_outside", "x", 0, "cos"),
+        ({"x": "cos(u)*cosh(u)", "y": "sin(u)"}, "mixed_function_kinds", "x", 7, "cosh"),
+        ({"x": "s", "y": "t", "z": "sqrt(s)"}, "function_not_rational", "z", 0, "sqrt"),
+        ({"x": "exp(s)", "y": "t", "z": "s"}, "function_not_rational", "x", 0, "exp"),
+        ({"x": "s", "y": "1+log(t)", "z": "s"}, "function_not_rational", "y", 2, "log"),
+        ({"x": "s", "y": "t", "z": "foo(s)"}, "unknown_function", "z", 0, "foo"),
+    ]
+    for request, code, field, position, name in refused:
+        status, _, body = s.post_json("/v1/implicitize", request)
+        err = body.get("error", {})
+        check(status == 400 and err.get("code") == code and err.get("field") == field
+              and err.get("position") == position and ("'%s'" % name) in err.get("message", ""),
+              "%r: %s %r" % (request, status, body))
+    status, _, body = s.post_json("/v1/groebner", {"polynomials": ["cos(x)+y"]})
+    check(status == 400 and error_code(body) == "function_not_allowed", "groebner with cos: %s %r" % (status, body))
+    # A patch's domain is in the input's parameters (angles): the arc 0 <= t <= 1.5 of the
+    # unit circle lies in x >= cos(1.5) > 0; read as tan(t/2) in [0, 1.5] it would reach x < 0.
+    status, _, body = s.post_json("/v1/sdf", {"x": "cos(t)", "y": "sin(t)", "domain": [0, 1.5]})
+    box = body.get("box", [])
+    check(status == 200 and len(box) == 4 and 0 < box[0] < 0.08 and 0.99 < box[3] < 1.0,
+          "arc in angles: %s %r" % (status, box))
+    status, _, body = s.post_json("/v1/sdf", {"x": "cos(t)", "y": "sin(t)", "domain": [0, 3.5]})
+    err = body.get("error", {})
+    check(status == 400 and err.get("code") == "domain_out_of_range" and err.get("field") == "domain",
+          "angle beyond pi: %s %r" % (status, body))
+
+
 def test_semantic_errors(s):
     status, _, body = s.post_json("/v1/implicitize", {"x": "t", "y": "t^2", "z": "t^3"})
     check(status == 422 and error_code(body) == "no_single_equation", "curve: %s %r" % (status, body))
@@ -680,6 +739,7 @@ def main():
         lambda: test_groebner(s),
         lambda: test_resultant(s),
         lambda: test_input_errors(s),
+        lambda: test_trigonometric(s),
         lambda: test_semantic_errors(s),
         lambda: test_routing_errors(s),
         lambda: test_size_limits(s, max_body),
