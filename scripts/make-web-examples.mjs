@@ -64,9 +64,9 @@ const DOMAINS = {
 // whole plane); the hyperboloid's domain is u in [-1, 1] and the angle v in [-5/2, 5/2]
 // radians (radians are exact numbers like any other; π is not one, so a closed circle
 // of angles cannot be typed, and the default domain of an unbounded patch would show
-// only a corner of it). Not wider: the page's default tolerance approximates the patch,
-// and v in [-3, 3] (tv = tan(v/2) up to 14) takes 30 pieces and 33 s where [-5/2, 5/2]
-// takes one piece and half a second (POST /v1/sdf with "tolerance": 0.001).
+// only a corner of it). Not wider: tv = tan(v/2) grows fast towards v = ±π (14 at
+// v = 3), and so do the patch's cover and GLSL. At the page's default tolerance the
+// exact equation (degree 2) is the shorter GLSL and is kept.
 const EXTRA_EXAMPLES = [
   {
     name: 'bicubic_patch',

@@ -260,8 +260,9 @@ test('the trigonometric sphere and torus and the cosh/sinh hyperboloid from the 
     torus_trig: ['half_angle', 'half_angle'],
     hyperboloid_cosh: ['exponential', 'half_angle'],
   };
-  // As a user gets them: the default tolerance (the hyperboloid's patch, over its
-  // domain, is drawn from its approximation; the closed ones keep their equation).
+  // As a user gets them: at the default tolerance (each keeps its exact equation: the
+  // closed ones over the whole plane, the hyperboloid's patch because its degree-2
+  // equation is shorter GLSL than any approximation).
   await page.fill('#tolerance', '1e-3');
   for (const name of ['sphere_trig', 'torus_trig', 'hyperboloid_cosh']) {
     const example = examples.find((e) => e.name === name);
