@@ -530,51 +530,44 @@ std::string vec3_literal(const Vec3<float>& v) {
   return "vec3(" + format_glsl_float(v.x) + ", " + format_glsl_float(v.y) + ", " + format_glsl_float(v.z) + ")";
 }
 
-std::string vec3_array(const std::string& name, const std::vector<Vec3<float>>& values) {
-  const std::string n = std::to_string(values.size());
-  std::string out = "const vec3 " + name + "[" + n + "] = vec3[" + n + "](";
-  for (std::size_t i = 0; i < values.size(); ++i)
-    out += (i % 4 == 0 ? "\n  " : " ") + vec3_literal(values[i]) + (i + 1 < values.size() ? "," : "");
-  return out + ");\n";
-}
-
 }  // namespace
 
 std::string PatchCover::to_glsl(const std::string& function) const {
-  const std::string clusters = std::to_string(float_.cluster_lo.size());
-  const std::string k = std::to_string(cluster_size_);
+  // The walk of distance_lower_bound() unrolled, the boxes as literals: a GPU
+  // indexing a constant array by a loop counter may copy the whole array for every
+  // call (SwiftShader does: docs/sdf.md, "A browser frame"), which costs more than
+  // the boxes' arithmetic. The padding of the last cluster repeats a leaf, and a
+  // repeated min changes nothing, so it is left out.
   const std::string f = function;
-  return "// The distance to the union of " + std::to_string(stats_.leaves) + " boxes covering the patch (" + clusters +
-         " clusters of " + k + "), rounded down; at least |d|.\n" + vec3_array(f + "_lo", float_.lo) +
-         vec3_array(f + "_hi", float_.hi) + vec3_array(f + "_clo", float_.cluster_lo) +
-         vec3_array(f + "_chi", float_.cluster_hi) + "float " + f +
-         "_d2(vec3 p, vec3 lo, vec3 hi) {\n"
-         "  vec3 m = min(max(max(lo - p, p - hi), 0.0), vec3(" +
-         format_glsl_float(static_cast<float>(kClamp)) +
-         "));\n"
-         "  return m.x * m.x + m.y * m.y + m.z * m.z;\n"
-         "}\n"
-         "float " +
-         f +
-         "(vec3 p, float d) {\n"
-         "  float ad = abs(d);\n"
-         "  float d2 = ad * ad;\n"
-         "  float best = " +
-         format_glsl_float(static_cast<float>(kFarSquared)) +
-         ";\n"
-         "  for (int c = 0; c < " +
-         clusters + "; ++c) {\n    if (" + f + "_d2(p, " + f + "_clo[c], " + f +
-         "_chi[c]) < best) {\n"
-         "      for (int j = c * " +
-         k + "; j < c * " + k + " + " + k + "; ++j) best = min(best, " + f + "_d2(p, " + f + "_lo[j], " + f +
-         "_hi[j]));\n"
-         "      if (best <= d2) return ad;\n"
-         "    }\n"
-         "  }\n"
-         "  return max(ad, sqrt(best) * " +
-         format_glsl_float(float_.shrink) +
-         ");\n"
-         "}\n";
+  const std::size_t clusters = float_.cluster_lo.size();
+  std::string out = "// The distance to the union of " + std::to_string(stats_.leaves) + " boxes covering the patch (" +
+                    std::to_string(clusters) + " clusters of up to " + std::to_string(cluster_size_) +
+                    "), rounded down; at least |d|.\n"
+                    "float " +
+                    f +
+                    "_d2(vec3 p, vec3 lo, vec3 hi) {\n"
+                    "  vec3 m = min(max(max(lo - p, p - hi), 0.0), vec3(" +
+                    format_glsl_float(static_cast<float>(kClamp)) +
+                    "));\n"
+                    "  return m.x * m.x + m.y * m.y + m.z * m.z;\n"
+                    "}\n"
+                    "float " +
+                    f +
+                    "(vec3 p, float d) {\n"
+                    "  float ad = abs(d);\n"
+                    "  float d2 = ad * ad;\n"
+                    "  float best = " +
+                    format_glsl_float(static_cast<float>(kFarSquared)) + ";\n";
+  for (std::size_t c = 0; c < clusters; ++c) {
+    out += "  if (" + f + "_d2(p, " + vec3_literal(float_.cluster_lo[c]) + ", " + vec3_literal(float_.cluster_hi[c]) +
+           ") < best) {\n";
+    for (std::size_t j = c * cluster_size_; j < std::min((c + 1) * cluster_size_, stats_.leaves); ++j) {
+      out += "    best = min(best, " + f + "_d2(p, " + vec3_literal(float_.lo[j]) + ", " + vec3_literal(float_.hi[j]) +
+             "));\n";
+    }
+    out += "    if (best <= d2) return ad;\n  }\n";
+  }
+  return out + "  return max(ad, sqrt(best) * " + format_glsl_float(float_.shrink) + ");\n}\n";
 }
 
 }  // namespace implicitizer

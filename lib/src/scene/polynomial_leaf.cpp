@@ -312,8 +312,9 @@ std::string approximation_size(const PatchApproximation& a, std::size_t lines) {
 }  // namespace
 
 std::size_t PolynomialLeaf::piece_glsl_lines(std::size_t k) const {
-  // Beyond the first, a piece is also its culling test and its min (emit_leaf).
-  std::size_t lines = count_lines(to_glsl("f", k)) + (k > 0 ? 5 : 0);
+  // Beyond the first, a piece is also its culling test, its distance's call, its
+  // cover's call with the min and the closing brace (emit_leaf).
+  std::size_t lines = count_lines(to_glsl("f", k)) + (k > 0 ? 4 : 0);
   if (pieces_[k].cover) lines += count_lines(pieces_[k].cover->to_glsl("c"));
   return lines;
 }
@@ -462,13 +463,19 @@ std::string emit_leaf(SceneGlslWriter& w, const CompiledNode& n, const std::stri
   const std::string id = "leaf" + std::to_string(n.leaf);
   if (leaf.piece_count() == 1) return emit_piece(w, leaf, id, 0, n, p);
   // The union of the pieces' sheets, in evaluate()'s order (min is exact in float),
-  // each piece skipped when its cover's hull is no nearer than the union so far.
+  // each piece skipped when its cover's hull is no nearer than the union so far, and
+  // its cover when its |d| is not.
   const std::string value =
       w.value(emit_piece(w, leaf, id + "_piece0", 0, n, p), "the union of the approximation's pieces");
   for (std::size_t k = 1; k < leaf.piece_count(); ++k) {
+    const std::string piece = id + "_piece" + std::to_string(k);
     w.statement("  if (" + leaf.cover(k)->hull_glsl(p) + " < " + value + ") {\n");
-    const std::string t = emit_piece(w, leaf, id + "_piece" + std::to_string(k), k, n, p);
-    w.statement("  " + value + " = min(" + value + ", " + t + ");\n  }\n");
+    w.require_helper(piece, leaf.to_glsl(w.prefix() + "_" + piece, k));
+    const std::string d = w.value(w.call(piece, p), SceneGlslWriter::type(n));
+    const std::string cover = piece + "_cover";
+    w.require_helper(cover, leaf.cover(k)->to_glsl(w.prefix() + "_" + cover), PatchCover::glsl_suffixes());
+    w.statement("  if (abs(" + d + ") < " + value + ") " + value + " = min(" + value + ", " +
+                w.call(cover, p + ", " + d) + ");\n  }\n");
   }
   return value;
 }

@@ -4,6 +4,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <map>
 
 namespace implicitizer {
@@ -201,9 +202,6 @@ const char* register_name(R r) {
   return kNames[static_cast<std::size_t>(r)];
 }
 
-// "+ 1.5e+00" or "- 1.5e+00": a - c and a + (-c) are the same IEEE operation.
-std::string signed_term(float c) { return c < 0 ? " - " + format_glsl_float(-c) : " + " + format_glsl_float(c); }
-
 }  // namespace
 
 std::string format_glsl_float(float x) {
@@ -227,23 +225,162 @@ std::string PolynomialProgram::glsl_table(const std::string& name) const {
   return out;
 }
 
+namespace {
+
+// The gradient program's registers as components of three vectors, A = (a, aw),
+// B = (b, bv, bw), G = (g, gu, gv, gw): Horner's steps on one level write one vector
+// with one operation, so the GLSL states them in one statement each.
+struct Slot {
+  int vector = -1;  // 0: A, 1: B, 2: G; -1: an input (u, v, w)
+  int component = 0;
+};
+
+Slot slot_of(R r) {
+  switch (r) {
+    case R::a:
+      return {0, 0};
+    case R::aw:
+      return {0, 1};
+    case R::b:
+      return {1, 0};
+    case R::bv:
+      return {1, 1};
+    case R::bw:
+      return {1, 2};
+    case R::g:
+      return {2, 0};
+    case R::gu:
+      return {2, 1};
+    case R::gv:
+      return {2, 2};
+    case R::gw:
+      return {2, 3};
+    default:
+      return {};
+  }
+}
+
+constexpr const char* kVectorNames[3] = {"A", "B", "G"};
+constexpr int kVectorSizes[3] = {2, 3, 4};
+constexpr const char* kComponents = "xyzw";
+
+std::string vector_register(R r) {
+  const Slot slot = slot_of(r);
+  if (slot.vector < 0) return register_name(r);
+  return std::string(kVectorNames[slot.vector]) + "." + kComponents[slot.component];
+}
+
+// Consecutive steps that write distinct components of one vector with the same
+// operation (loads and copies; or multiply-adds by one register; or multiplies by
+// one register), none reading a component an earlier one wrote: one GLSL vector
+// statement computes each component exactly as the scalar step does (a vector
+// assignment reads every operand before it writes), so the C++ evaluator's steps
+// stay what the GPU runs.
+class VectorStatement {
+ public:
+  explicit VectorStatement(const ProgramStep& first) { steps_.push_back(&first); }
+
+  bool joins(const ProgramStep& s) const {
+    const ProgramStep& first = *steps_.front();
+    if (slot_of(s.target).vector != slot_of(first.target).vector || kind_class(s) != kind_class(first)) return false;
+    if (kind_class(s) != 0 && s.by != first.by) return false;
+    for (const ProgramStep* earlier : steps_) {
+      if (earlier->target == s.target) return false;
+      if (reads(s, earlier->target)) return false;
+    }
+    return true;
+  }
+  void add(const ProgramStep& s) { steps_.push_back(&s); }
+
+  // The statement; `operand` states a step's added term (constant or register).
+  template <typename Operand>
+  std::string glsl(const Operand& operand) const {
+    std::vector<const ProgramStep*> sorted = steps_;
+    std::sort(sorted.begin(), sorted.end(), [](const ProgramStep* x, const ProgramStep* y) {
+      return slot_of(x->target).component < slot_of(y->target).component;
+    });
+    const int vector = slot_of(sorted.front()->target).vector;
+    std::string lhs = kVectorNames[vector];
+    if (static_cast<int>(sorted.size()) < kVectorSizes[vector]) {
+      lhs += ".";
+      for (const ProgramStep* s : sorted) lhs += kComponents[slot_of(s->target).component];
+    }
+    std::string terms;
+    for (const ProgramStep* s : sorted) terms += (terms.empty() ? "" : ", ") + operand(*s);
+    if (sorted.size() > 1) terms = "vec" + std::to_string(sorted.size()) + "(" + terms + ")";
+    const ProgramStep& first = *sorted.front();
+    switch (kind_class(first)) {
+      case 0:
+        return lhs + " = " + terms;
+      case 1:
+        return lhs + " = " + lhs + " * " + register_name(first.by) + " + " + terms;
+      default:
+        return lhs + " = " + lhs + " * " + register_name(first.by);
+    }
+  }
+
+ private:
+  // 0: the target is replaced (load, copy); 1: multiply-add; 2: multiply.
+  static int kind_class(const ProgramStep& s) {
+    switch (s.kind) {
+      case Kind::load_constant:
+      case Kind::copy:
+        return 0;
+      case Kind::multiply_add:
+      case Kind::multiply_add_constant:
+        return 1;
+      default:
+        return 2;
+    }
+  }
+  static bool reads(const ProgramStep& s, R r) {
+    switch (s.kind) {
+      case Kind::load_constant:
+        return false;
+      case Kind::copy:
+        return s.source == r;
+      case Kind::multiply:
+        return s.by == r;
+      default:
+        return s.by == r || (s.kind == Kind::multiply_add && s.source == r);
+    }
+  }
+
+  std::vector<const ProgramStep*> steps_;
+};
+
+}  // namespace
+
 std::string PolynomialProgram::to_glsl(const std::string& indent, const std::string& table, bool absolute) const {
   // A coefficient as the GLSL reads it: a literal, or an entry of the table.
   const auto coefficient = [&](const ProgramStep& s) {
+    if (table.empty() || s.coefficient < 0) return format_glsl_float(s.constant_float);
     const std::string entry = table + std::to_string(s.coefficient) + "[cell]";
     return absolute ? "abs(" + entry + ")" : entry;
   };
-  const bool tabled = !table.empty();
-  std::string out = outputs_ == ProgramOutputs::value
-                        ? indent + "float a = 0.0, b = 0.0, g = 0.0;\n"
-                        : indent + "float a = 0.0, aw = 0.0, b = 0.0, bv = 0.0, bw = 0.0;\n" + indent +
-                              "float g = 0.0, gu = 0.0, gv = 0.0, gw = 0.0;\n";
+  if (outputs_ == ProgramOutputs::value) return scalar_glsl(indent, coefficient);
+  const auto operand = [&](const ProgramStep& s) {
+    return s.kind == Kind::copy || s.kind == Kind::multiply_add ? vector_register(s.source) : coefficient(s);
+  };
+  std::string out =
+      indent + "vec2 A = vec2(0.0);\n" + indent + "vec3 B = vec3(0.0);\n" + indent + "vec4 G = vec4(0.0);\n";
+  for (std::size_t i = 0; i < steps_.size();) {
+    VectorStatement statement(steps_[i]);
+    for (++i; i < steps_.size() && statement.joins(steps_[i]); ++i) statement.add(steps_[i]);
+    out += indent + statement.glsl(operand) + ";\n";
+  }
+  return out + indent + "float g = G.x, gu = G.y, gv = G.z, gw = G.w;\n";
+}
+
+std::string PolynomialProgram::scalar_glsl(const std::string& indent,
+                                           const std::function<std::string(const ProgramStep&)>& coefficient) const {
+  std::string out = indent + "float a = 0.0, b = 0.0, g = 0.0;\n";
   for (const ProgramStep& s : steps_) {
     const std::string t = register_name(s.target);
     out += indent + t + " = ";
     switch (s.kind) {
       case Kind::load_constant:
-        out += tabled && s.coefficient >= 0 ? coefficient(s) : format_glsl_float(s.constant_float);
+        out += coefficient(s);
         break;
       case Kind::copy:
         out += register_name(s.source);
@@ -254,10 +391,12 @@ std::string PolynomialProgram::to_glsl(const std::string& indent, const std::str
       case Kind::multiply_add:
         out += t + " * " + register_name(s.by) + " + " + register_name(s.source);
         break;
-      case Kind::multiply_add_constant:
-        out += t + " * " + register_name(s.by) +
-               (tabled && s.coefficient >= 0 ? " + " + coefficient(s) : signed_term(s.constant_float));
+      case Kind::multiply_add_constant: {
+        // "- 1.5e+00" for a negative literal: a - c and a + (-c) are the same IEEE operation.
+        const std::string c = coefficient(s);
+        out += t + " * " + register_name(s.by) + (c[0] == '-' ? " - " + c.substr(1) : " + " + c);
         break;
+      }
     }
     out += ";\n";
   }

@@ -136,12 +136,12 @@ class PatchCover {
   /// The further factor of hull_distance_lower_bound().
   static constexpr double kHullShrink = 1.0 - 0x1p-16;
 
-  /// `float FUNCTION(vec3 p, float d)` with its constant arrays FUNCTION_lo, …,
-  /// computing distance_lower_bound<float>. Precondition: FUNCTION is a valid GLSL
-  /// identifier.
+  /// `float FUNCTION(vec3 p, float d)` and its helper FUNCTION_d2, computing
+  /// distance_lower_bound<float>: the same walk, unrolled, the boxes stated as
+  /// literals. Precondition: FUNCTION is a valid GLSL identifier.
   std::string to_glsl(const std::string& function) const;
   /// The other global names to_glsl(FUNCTION) defines: FUNCTION + each suffix.
-  static std::vector<std::string> glsl_suffixes() { return {"_lo", "_hi", "_clo", "_chi", "_d2"}; }
+  static std::vector<std::string> glsl_suffixes() { return {"_d2"}; }
 
   /// What build() did.
   const PatchCoverStats& stats() const { return stats_; }

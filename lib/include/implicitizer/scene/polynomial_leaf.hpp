@@ -106,14 +106,19 @@ class PolynomialLeaf {
 
   /// The leaf's value at p: d (untrimmed, signed), the trimmed sheet, or the min of
   /// the pieces' trimmed sheets (an approximation). A piece whose cover's hull is no
-  /// nearer than the min so far is skipped: its value is at least that distance
-  /// (PatchCover::hull_distance_lower_bound), so the min is the same, and a point
-  /// meets the polynomials of the pieces near it only (the GLSL does the same).
+  /// nearer than the min so far is skipped, and so is the cover of a piece whose |d|
+  /// is not below it: the piece's value is at least either (max(|d|, ≥ the hull's
+  /// distance): PatchCover::hull_distance_lower_bound), so the min is the same, and a
+  /// point meets only the polynomials of the pieces near it and only the covers of
+  /// the sheets near it (the GLSL does the same).
   template <typename T>
   T evaluate(const Vec3<T>& p) const {
     T value = pieces_.front().evaluate(p);
     for (std::size_t k = 1; k < pieces_.size(); ++k) {
-      if (pieces_[k].cover->hull_distance_lower_bound(p) < value) value = std::min(value, pieces_[k].evaluate(p));
+      const Piece& piece = pieces_[k];
+      if (!(piece.cover->hull_distance_lower_bound(p) < value)) continue;
+      const T d = piece.distance(p);
+      if (std::abs(d) < value) value = std::min(value, piece.cover->distance_lower_bound(p, d));
     }
     return value;
   }
@@ -173,9 +178,14 @@ class PolynomialLeaf {
     std::optional<SafeSdf> safe;
     std::optional<PatchCover> cover;
 
+    // The surface's distance, untrimmed.
+    template <typename T>
+    T distance(const Vec3<T>& p) const {
+      return fast ? fast->evaluate<T>(p.x, p.y, p.z) : safe->evaluate<T>(p.x, p.y, p.z);
+    }
     template <typename T>
     T evaluate(const Vec3<T>& p) const {
-      const T d = fast ? fast->evaluate<T>(p.x, p.y, p.z) : safe->evaluate<T>(p.x, p.y, p.z);
+      const T d = distance(p);
       return cover ? cover->distance_lower_bound(p, d) : d;
     }
   };

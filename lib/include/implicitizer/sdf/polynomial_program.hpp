@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -122,11 +123,14 @@ class PolynomialProgram {
     });
   }
 
-  /// GLSL statements that run the steps: one declaration of the registers a … gw
-  /// (a, b, g for a value-only program; initialised to 0.0), then one statement
-  /// per step, each line starting with `indent`. The inputs must be float
-  /// variables named u, v, w in scope; the result is left in g, gu, gv, gw (g).
-  /// Two programs in one function need a block `{ ... }` each.
+  /// GLSL statements that run the steps, each line starting with `indent`. The
+  /// inputs must be float variables named u, v, w in scope; the result is left in
+  /// float variables g, gu, gv, gw (g for a value-only program). A value-only program
+  /// states one step per statement in registers a, b, g; a full one keeps its
+  /// registers in vec2 A = (a, aw), vec3 B = (b, bv, bw) and vec4 G = (g, gu, gv, gw)
+  /// and states each run of steps that one vector operation computes (a Horner step
+  /// of one level and its derivatives) as one statement, the same floating-point
+  /// operations per component. Two programs in one function need a block `{ ... }` each.
   ///
   /// With a non-empty `table` coefficient i is read as `TABLEi[cell]` (or
   /// `abs(TABLEi[cell])` when `absolute`: the majorant reads G's table), `cell` an int
@@ -139,6 +143,9 @@ class PolynomialProgram {
 
  private:
   static std::size_t index(ProgramRegister r) { return static_cast<std::size_t>(r); }
+  // to_glsl() of a value-only program: one statement per step.
+  std::string scalar_glsl(const std::string& indent,
+                          const std::function<std::string(const ProgramStep&)>& coefficient) const;
   // The steps in T, each constant given by `constant(step)`.
   template <typename T, typename Constant>
   ValueAndGradient<T> run(T u, T v, T w, Constant constant) const {
