@@ -160,9 +160,10 @@ options:
   --domain s0,s1[,t0,t1]
                         the parameter domain of --x --y [--z], exact numbers with
                         lo < hi (default: docs/sdf.md, "Patches")
-  --tolerance EPS       approximate the patch of --x --y --z (a bounded domain) by
-                        low-degree pieces within EPS x its box's diagonal, both
-                        ways, 0 < EPS <= 0.5 (--json reports degree, pieces, GLSL
+  --tolerance EPS       model the patch of --x --y --z (a bounded domain) within
+                        EPS x its box's diagonal, both ways, 0 < EPS <= 0.5: the
+                        fewer GLSL lines of low-degree pieces and the exact
+                        equation (--json reports which, with degree, pieces, GLSL
                         lines and the bounds reached); default: the exact equation
   --mode fast|safe      fast: F/|grad F|, first order, not a bound (default); safe: a
                         proven lower bound of the distance (sphere tracing never
