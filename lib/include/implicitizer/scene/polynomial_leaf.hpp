@@ -105,12 +105,12 @@ class PolynomialLeaf {
                               SdfMode mode, const Budget& budget, const std::string& field, int dimension = 3);
 
   /// The leaf's value at p: d (untrimmed, signed), the trimmed sheet, or the min of
-  /// the pieces' trimmed sheets (an approximation). A piece whose cover's hull is no
-  /// nearer than the min so far is skipped, and so is the cover of a piece whose |d|
-  /// is not below it: the piece's value is at least either (max(|d|, ≥ the hull's
-  /// distance): PatchCover::hull_distance_lower_bound), so the min is the same, and a
-  /// point meets only the polynomials of the pieces near it and only the covers of
-  /// the sheets near it (the GLSL does the same).
+  /// the pieces' trimmed sheets (an approximation). A piece's value, max(|d|, its
+  /// cover's distance), is at least both |d| and its cover's hull distance
+  /// (PatchCover::hull_distance_lower_bound), so a piece whose hull is no nearer than
+  /// the min so far is skipped, and so is the cover of one whose |d| is not below it:
+  /// the min is the same, and a point meets only the polynomials of the pieces near
+  /// it and only the covers of the sheets near it (the GLSL does the same).
   template <typename T>
   T evaluate(const Vec3<T>& p) const {
     T value = pieces_.front().evaluate(p);
