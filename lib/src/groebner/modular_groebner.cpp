@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "buchberger_engine.hpp"
+#include "f4_engine.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/groebner/reduced_basis.hpp"
@@ -86,7 +87,7 @@ ModPolynomial dehomogenize_modulo(const ModPolynomial& f, const Ring& from, cons
 }
 
 PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generators, std::uint64_t prime,
-                   const BuchbergerParams& params, const Projection& projection) {
+                   const ModularGroebnerParams& params, const Projection& projection) {
   PrimeRun run;
   run.prime = prime;
   const detail::ModularArithmetic arithmetic(ring, prime);
@@ -98,9 +99,8 @@ PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generator
     }
     reduced.push_back(arithmetic.reduce_coefficients(g));
   }
-  detail::BuchbergerEngine<detail::ModularArithmetic> engine(arithmetic, ring, params, run.stats);
-  detail::BuchbergerEngine<detail::ModularArithmetic>::Outcome outcome;
-  engine.run(std::move(reduced), outcome);
+  detail::F4Outcome outcome = detail::run_modular_algorithm(ring, arithmetic, std::move(reduced), params.algorithm,
+                                                            params.buchberger, run.stats);
   const Ring& lift_ring = projection.affine != nullptr ? *projection.affine : ring;
   if (outcome.unit) {
     ModPolynomial one;
@@ -113,9 +113,9 @@ PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generator
     for (const auto& g : outcome.basis) {
       dehomogenized.push_back(dehomogenize_modulo(g, ring, lift_ring, arithmetic.modulus()));
     }
-    run.basis = affine.reduce_basis(std::move(dehomogenized), params.budget);
+    run.basis = affine.reduce_basis(std::move(dehomogenized), params.buchberger.budget);
   } else {
-    run.basis = arithmetic.reduce_basis(std::move(outcome.basis), params.budget);
+    run.basis = arithmetic.reduce_basis(std::move(outcome.basis), params.buchberger.budget);
   }
   if (projection.free_of_first > 0) {
     std::erase_if(run.basis, [&](const ModPolynomial& g) {
@@ -297,6 +297,11 @@ Polynomial dehomogenize(const Polynomial& p, const RingPtr& ring) {
 
 // ---------------------------------------------------------------- the driver
 
+PrimeSequence first_primes(const ModularGroebnerParams& params) {
+  if (params.first_prime != 0) return PrimeSequence::from(params.first_prime);
+  return params.algorithm == ModularAlgorithm::f4 ? PrimeSequence::from(kF4FirstPrime) : PrimeSequence();
+}
+
 class ModularDriver {
  public:
   // The runs are in `run_ring`, the lifting in `lift_ring` (the same ring unless the
@@ -309,7 +314,7 @@ class ModularDriver {
         params_(params),
         projection_(projection),
         stats_(stats),
-        primes_(params.first_prime == 0 ? PrimeSequence() : PrimeSequence::from(params.first_prime)) {
+        primes_(first_primes(params)) {
     threads_ = params.threads != 0 ? params.threads : std::max(1u, std::thread::hardware_concurrency());
     stats_.threads = threads_;
   }
@@ -370,7 +375,7 @@ class ModularDriver {
       for (std::size_t i = batch.size(); i < wanted; ++i) primes.push_back(primes_.next());
       std::vector<PrimeRun> runs(primes.size());
       run_one_per_thread(primes.size(), [&](std::size_t k) {
-        runs[k] = run_prime(*run_ring_, generators_, primes[k], params_.buchberger, projection_);
+        runs[k] = run_prime(*run_ring_, generators_, primes[k], params_, projection_);
       });
       for (auto& r : runs) {
         if (r.bad) {

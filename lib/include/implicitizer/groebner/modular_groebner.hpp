@@ -37,6 +37,7 @@
 #include <span>
 
 #include "implicitizer/groebner/buchberger.hpp"
+#include "implicitizer/groebner/f4.hpp"
 
 namespace implicitizer {
 
@@ -45,6 +46,11 @@ struct ModularGroebnerParams {
   /// The selection strategy and criteria of every run modulo a prime (and of the
   /// verification), and the budget of the whole computation.
   BuchbergerParams buchberger;
+  /// The algorithm of each run modulo a prime (f4.hpp). With F4 and first_prime = 0
+  /// the primes are those just above 2^30 (kF4FirstPrime): below 2^31 its matrix
+  /// reduction delays the modular reductions (f4_row_echelon.hpp); lifting then
+  /// needs twice as many primes as with 62-bit ones, each far cheaper.
+  ModularAlgorithm algorithm = ModularAlgorithm::buchberger;
   /// Prove the candidate over ℚ (the file comment). false: the affine candidate
   /// after a consistency check on one more prime, for callers that prove it otherwise.
   bool prove = true;
@@ -59,6 +65,9 @@ struct ModularGroebnerParams {
   /// than the rest's, so fewer primes lift them). 0: the whole basis.
   std::size_t lift_only_free_of_first = 0;
 };
+
+/// Where the primes of an F4 run start when ModularGroebnerParams::first_prime is 0.
+inline constexpr std::uint64_t kF4FirstPrime = std::uint64_t{1} << 30;
 
 /// What the modular computation did.
 struct ModularGroebnerStats {
