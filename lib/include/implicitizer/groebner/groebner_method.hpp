@@ -2,9 +2,11 @@
 /// \file
 /// Which algorithm computes a Gröbner basis or an elimination, and the one policy
 /// that chooses between them (`auto`): Buchberger's algorithm over ℚ first, within a
-/// head start measured in work, then the proven modular computation
-/// (modular_groebner.hpp). Buchberger answers the small ideals a user types at once;
-/// the modular route wins on the ones whose coefficients swell (docs/algorithms.md).
+/// head start measured in work, then the proven modular computation with F4 modulo
+/// each prime (modular_groebner.hpp, f4.hpp). Buchberger answers the small ideals a
+/// user types at once; the modular route wins on the ones whose coefficients swell,
+/// and F4 beats Buchberger modulo p on every ideal measured past the head start
+/// (docs/algorithms.md).
 
 #include <optional>
 #include <span>
@@ -19,7 +21,7 @@ namespace implicitizer {
 
 /// The algorithms a caller may ask for.
 enum class GroebnerMethod {
-  automatic,   ///< buchberger within kBuchbergerHeadStartMs of work, then modular
+  automatic,   ///< buchberger within kBuchbergerHeadStartMs of work, then f4
   buchberger,  ///< Buchberger's algorithm over ℚ (buchberger.hpp)
   modular,     ///< modulo primes by Buchberger's algorithm, lifted and proven over ℚ (modular_groebner.hpp)
   f4,          ///< modulo primes by F4 (f4.hpp), lifted and proven over ℚ the same way
