@@ -319,11 +319,6 @@ Polynomial dehomogenize(const Polynomial& p, const RingPtr& ring) {
 
 // ---------------------------------------------------------------- the driver
 
-PrimeSequence first_primes(const ModularGroebnerParams& params) {
-  if (params.first_prime != 0) return PrimeSequence::from(params.first_prime);
-  return params.algorithm == ModularAlgorithm::f4 ? PrimeSequence::from(kF4FirstPrime) : PrimeSequence();
-}
-
 class ModularDriver {
  public:
   // The runs are in `run_ring`, the lifting in `lift_ring` (the same ring unless the
@@ -336,7 +331,7 @@ class ModularDriver {
         params_(params),
         projection_(projection),
         stats_(stats),
-        primes_(first_primes(params)) {
+        primes_(params.first_prime == 0 ? PrimeSequence() : PrimeSequence::from(params.first_prime)) {
     threads_ = params.threads != 0 ? params.threads : std::max(1u, std::thread::hardware_concurrency());
     stats_.threads = threads_;
   }
