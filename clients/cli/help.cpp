@@ -95,8 +95,9 @@ options:
                         --order); the basis is then computed in an elimination order
                         for s,t (docs/cli.md); --json shows both
   --method M            auto (default): Buchberger over Q for about 0.1 s of its work,
-                        then modular;
-                        buchberger; modular: modulo primes, lifted, proven over Q
+                        then f4;
+                        buchberger; modular: modulo primes, lifted, proven over Q;
+                        f4: the same with F4 modulo each prime
   --modular             the same as --method modular
   --timeout SECONDS     wall-time limit, > 0 (default: none)
   --max-terms N         largest number of terms of any intermediate polynomial (default 0 = none)

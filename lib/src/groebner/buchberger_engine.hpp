@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "growing_basis.hpp"
 #include "implicitizer/groebner/buchberger.hpp"
 #include "reducer.hpp"
 #include "s_pair_queue.hpp"
@@ -46,34 +47,28 @@ class BuchbergerEngine {
   // update is correct for a run, and a run whose every pair reduces to zero ends
   // with its input as the basis). Returns true otherwise.
   bool run(std::vector<Poly> generators, Outcome& out, bool stop_at_nonzero = false) {
-    for (auto& g : generators) {
-      params_.budget.check("Buchberger's algorithm (the generators)");
-      if (g.empty()) continue;
-      if (is_constant(g)) {
-        out.unit = true;
-        return true;
-      }
-      const std::int32_t sugar = sugar_of(g);
-      insert(std::move(g), sugar);
+    if (!basis_.insert_generators(std::move(generators), params_.budget, "Buchberger's algorithm (the generators)")) {
+      out.unit = true;
+      return true;
     }
     SPair pair;
-    while (queue_.pop(entries_, pair)) {
+    while (queue_.pop(basis_.entries(), pair)) {
       params_.budget.check("Buchberger's algorithm");
       ++stats_.reductions;
       stats_.max_degree = std::max(stats_.max_degree, pair.lcm_degree);
-      Poly s = arithmetic_.s_polynomial(polynomials_[pair.i], polynomials_[pair.j]);
+      Poly s = arithmetic_.s_polynomial(basis_.polynomials()[pair.i], basis_.polynomials()[pair.j]);
       std::int32_t sugar = pair.sugar;
       ReductionCounters counters;
       counters.work = kWorkPerTerm * s.size();
       params_.budget.charge_work(counters.work, "Buchberger's algorithm");
-      Poly h = arithmetic_.reduce(std::move(s), reducers_, false, params_.budget, counters, &sugar);
+      Poly h = arithmetic_.reduce(std::move(s), basis_.reducers(), false, params_.budget, counters, &sugar);
       if (!h.empty() && stop_at_nonzero) {
         stats_.reduction_steps += counters.steps;
         stats_.work += counters.work;
         return false;
       }
       if (!h.empty() && params_.variant.tail_reduce) {
-        h = arithmetic_.reduce(std::move(h), reducers_, true, params_.budget, counters, &sugar);
+        h = arithmetic_.reduce(std::move(h), basis_.reducers(), true, params_.budget, counters, &sugar);
       }
       stats_.reduction_steps += counters.steps;
       stats_.work += counters.work;
@@ -81,67 +76,23 @@ class BuchbergerEngine {
         ++stats_.zero_reductions;
         continue;
       }
-      if (is_constant(h)) {
+      if (basis_.is_constant(h)) {
         out.unit = true;
         return true;
       }
-      insert(std::move(h), sugar);
+      basis_.insert(std::move(h), sugar);
     }
-    for (std::size_t i = 0; i < entries_.size(); ++i) {
-      if (!entries_[i].redundant) out.basis.push_back(std::move(polynomials_[i]));
-    }
+    out.basis = basis_.take_nonredundant();
     return true;
   }
 
  private:
-  bool is_constant(const Poly& p) const { return p.size() == 1 && ring_.total_degree(p.monomials.data()) == 0; }
-
-  void insert(Poly p, std::int32_t sugar) {
-    BasisEntry e;
-    const std::size_t w = ring_.monomial_size();
-    e.lead_monomial.assign(p.monomials.begin(), p.monomials.begin() + static_cast<std::ptrdiff_t>(w));
-    e.mask = ring_.divisor_mask(e.lead());
-    e.lead_degree = ring_.sugar_degree(e.lead());
-    e.sugar = std::max(sugar, e.lead_degree);
-    entries_.push_back(std::move(e));
-    polynomials_.push_back(std::move(p));
-    queue_.add_element(entries_, entries_.size() - 1);
-    rebuild_reducers();
-  }
-
-  // The sugar of an input polynomial: its largest order degree over all terms.
-  std::int32_t sugar_of(const Poly& p) const {
-    const std::size_t w = ring_.monomial_size();
-    std::int32_t d = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) d = std::max(d, ring_.sugar_degree(p.monomials.data() + i * w));
-    return d;
-  }
-
-  // The reducer list points into polynomials_, which may just have reallocated:
-  // rebuild it (linear in the basis).
-  void rebuild_reducers() {
-    // Reducers: every element, redundant ones included. A redundant element forms no
-    // new pairs (Gebauer–Möller), but it stays a reducer: the element t that made it
-    // redundant often has a far higher sugar (a low-degree leading monomial found
-    // late), and reducing by t instead raises the sugar of every result, so the
-    // selection climbs in degree and coefficients swell. Katsura-3 in lex with sugar
-    // took over 60 s without it and takes 0.3 ms with it; tp_22 2.0 s -> 0.6 s.
-    // Reducing by any ideal member is sound: the elements ever added form a Gröbner
-    // basis (a redundant r's pairs with later u are covered by the chain r–t–u).
-    reducers_.clear();
-    for (std::size_t i = 0; i < entries_.size(); ++i) {
-      reducers_.push_back(BasicReducer<Poly>{&polynomials_[i], entries_[i].mask, entries_[i].sugar});
-    }
-  }
-
   const Arithmetic& arithmetic_;
   const Ring& ring_;
   const BuchbergerParams& params_;
   BuchbergerStats& stats_;
   SPairQueue queue_;
-  std::vector<BasisEntry> entries_;
-  std::vector<Poly> polynomials_;
-  std::vector<BasicReducer<Poly>> reducers_;
+  GrowingBasis<Poly> basis_{ring_, queue_};
 };
 
 }  // namespace implicitizer::detail

@@ -1,6 +1,7 @@
 #include "implicitizer/groebner/modular_groebner.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -8,6 +9,8 @@
 #include <utility>
 
 #include "buchberger_engine.hpp"
+#include "f4_engine.hpp"
+#include "growing_basis.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/groebner/reduced_basis.hpp"
@@ -16,6 +19,7 @@
 #include "implicitizer/modular/prime_sequence.hpp"
 #include "int_polynomial.hpp"
 #include "mod_polynomial.hpp"
+#include "s_pair_queue.hpp"
 
 namespace implicitizer {
 
@@ -86,7 +90,7 @@ ModPolynomial dehomogenize_modulo(const ModPolynomial& f, const Ring& from, cons
 }
 
 PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generators, std::uint64_t prime,
-                   const BuchbergerParams& params, const Projection& projection) {
+                   const ModularGroebnerParams& params, const Projection& projection) {
   PrimeRun run;
   run.prime = prime;
   const detail::ModularArithmetic arithmetic(ring, prime);
@@ -98,9 +102,8 @@ PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generator
     }
     reduced.push_back(arithmetic.reduce_coefficients(g));
   }
-  detail::BuchbergerEngine<detail::ModularArithmetic> engine(arithmetic, ring, params, run.stats);
-  detail::BuchbergerEngine<detail::ModularArithmetic>::Outcome outcome;
-  engine.run(std::move(reduced), outcome);
+  detail::F4Outcome outcome = detail::run_modular_algorithm(ring, arithmetic, std::move(reduced), params.algorithm,
+                                                            params.buchberger, run.stats);
   const Ring& lift_ring = projection.affine != nullptr ? *projection.affine : ring;
   if (outcome.unit) {
     ModPolynomial one;
@@ -113,9 +116,9 @@ PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generator
     for (const auto& g : outcome.basis) {
       dehomogenized.push_back(dehomogenize_modulo(g, ring, lift_ring, arithmetic.modulus()));
     }
-    run.basis = affine.reduce_basis(std::move(dehomogenized), params.budget);
+    run.basis = affine.reduce_basis(std::move(dehomogenized), params.buchberger.budget);
   } else {
-    run.basis = arithmetic.reduce_basis(std::move(outcome.basis), params.budget);
+    run.basis = arithmetic.reduce_basis(std::move(outcome.basis), params.buchberger.budget);
   }
   if (projection.free_of_first > 0) {
     std::erase_if(run.basis, [&](const ModPolynomial& g) {
@@ -237,26 +240,45 @@ bool agrees_modulo(const std::vector<IntPolynomial>& candidate, const PrimeRun& 
 
 // ---------------------------------------------------------------- the proof over ℚ
 
+// The S-pairs of `basis` that Gebauer–Möller's update (and the product criterion)
+// leave, as the Buchberger engine would reduce them on a candidate whose every
+// S-polynomial reduces to zero: then no element is added, so these are all its pairs.
+std::vector<detail::SPair> criterion_pairs(const Ring& ring, const std::vector<IntPolynomial>& basis,
+                                           const BuchbergerParams& params, BuchbergerStats& stats) {
+  detail::SPairQueue queue(ring, params, stats);
+  detail::GrowingBasis<IntPolynomial> entries(ring, queue);
+  entries.insert_generators(basis, params.budget, "the proof over Q (the pairs)");
+  std::vector<detail::SPair> pairs;
+  for (detail::SPair pair; queue.pop(entries.entries(), pair);) pairs.push_back(std::move(pair));
+  return pairs;
+}
+
 // (a) and (b) of the file comment: every generator reduces to zero modulo the
-// candidate, and the candidate is a Gröbner basis.
+// candidate, and the candidate is a Gröbner basis. The pairs' reductions modulo the
+// fixed candidate are independent, so they are shared among `threads` threads; the
+// first that does not reduce to zero stops them all.
 bool prove_candidate(const Ring& ring, const std::vector<IntPolynomial>& generators,
-                     const std::vector<Polynomial>& candidate, const BuchbergerParams& params,
+                     const std::vector<Polynomial>& candidate, const BuchbergerParams& params, std::size_t threads,
                      ModularGroebnerStats& stats) {
   std::vector<IntPolynomial> basis;
   for (const auto& g : candidate) basis.push_back(detail::to_int_polynomial(g));
   std::vector<detail::Reducer> reducers;
   for (const auto& g : basis) reducers.push_back({&g, ring.divisor_mask(g.monomials.data()), 0});
-  detail::ReductionCounters counters;
-  for (const auto& h : generators) {
-    if (!detail::reduce(ring, h, reducers, false, params.budget, counters).empty()) return false;
-  }
   BuchbergerStats pair_stats;
-  const detail::IntegerArithmetic arithmetic(ring);
-  detail::BuchbergerEngine<detail::IntegerArithmetic> engine(arithmetic, ring, params, pair_stats);
-  detail::BuchbergerEngine<detail::IntegerArithmetic>::Outcome outcome;
-  const bool groebner = engine.run(std::move(basis), outcome, /*stop_at_nonzero=*/true);
-  stats.verification_pairs += pair_stats.reductions;
-  return groebner;
+  const std::vector<detail::SPair> pairs = criterion_pairs(ring, basis, params, pair_stats);
+  const std::size_t jobs = generators.size() + pairs.size();
+  std::atomic<bool> refuted = false;
+  run_one_per_thread(std::min(threads, std::max<std::size_t>(jobs, 1)), [&](std::size_t k) {
+    detail::ReductionCounters counters;
+    for (std::size_t job = k; job < jobs && !refuted.load(std::memory_order_relaxed); job += threads) {
+      IntPolynomial f = job < generators.size() ? generators[job]
+                                                : detail::s_polynomial(ring, basis[pairs[job - generators.size()].i],
+                                                                       basis[pairs[job - generators.size()].j]);
+      if (!detail::reduce(ring, std::move(f), reducers, false, params.budget, counters).empty()) refuted = true;
+    }
+  });
+  stats.verification_pairs += pairs.size();
+  return !refuted;
 }
 
 // ---------------------------------------------------------------- homogenization
@@ -324,7 +346,8 @@ class ModularDriver {
           stats_.checking_primes = batch.size();
           if (!params_.prove) return *candidate;
           const Stopwatch timer;
-          const bool proven = prove_candidate(*run_ring_, generators_, *candidate, params_.buchberger, stats_);
+          const bool proven =
+              prove_candidate(*run_ring_, generators_, *candidate, params_.buchberger, threads_, stats_);
           stats_.verify_ms += timer.elapsed_ms();
           if (proven) {
             stats_.proven = true;
@@ -370,7 +393,7 @@ class ModularDriver {
       for (std::size_t i = batch.size(); i < wanted; ++i) primes.push_back(primes_.next());
       std::vector<PrimeRun> runs(primes.size());
       run_one_per_thread(primes.size(), [&](std::size_t k) {
-        runs[k] = run_prime(*run_ring_, generators_, primes[k], params_.buchberger, projection_);
+        runs[k] = run_prime(*run_ring_, generators_, primes[k], params_, projection_);
       });
       for (auto& r : runs) {
         if (r.bad) {

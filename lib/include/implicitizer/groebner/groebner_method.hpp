@@ -2,9 +2,11 @@
 /// \file
 /// Which algorithm computes a Gröbner basis or an elimination, and the one policy
 /// that chooses between them (`auto`): Buchberger's algorithm over ℚ first, within a
-/// head start measured in work, then the proven modular computation
-/// (modular_groebner.hpp). Buchberger answers the small ideals a user types at once;
-/// the modular route wins on the ones whose coefficients swell (docs/algorithms.md).
+/// head start measured in work, then the proven modular computation with F4 modulo
+/// each prime (modular_groebner.hpp, f4.hpp). Buchberger answers the small ideals a
+/// user types at once; the modular route wins on the ones whose coefficients swell,
+/// and F4 beats Buchberger modulo p on every ideal measured past the head start
+/// (docs/algorithms.md).
 
 #include <optional>
 #include <span>
@@ -19,9 +21,10 @@ namespace implicitizer {
 
 /// The algorithms a caller may ask for.
 enum class GroebnerMethod {
-  automatic,   ///< buchberger within kBuchbergerHeadStartMs of work, then modular
+  automatic,   ///< buchberger within kBuchbergerHeadStartMs of work, then f4
   buchberger,  ///< Buchberger's algorithm over ℚ (buchberger.hpp)
-  modular,     ///< modulo primes, lifted and proven over ℚ (modular_groebner.hpp)
+  modular,     ///< modulo primes by Buchberger's algorithm, lifted and proven over ℚ (modular_groebner.hpp)
+  f4,          ///< modulo primes by F4 (f4.hpp), lifted and proven over ℚ the same way
 };
 
 /// How long `auto` lets Buchberger's algorithm over ℚ run before it switches to the
@@ -30,15 +33,16 @@ enum class GroebnerMethod {
 /// docs/algorithms.md has the measurements behind it).
 inline constexpr double kBuchbergerHeadStartMs = 100;
 
-/// Parses `auto`, `buchberger` and `modular`; throws InputError `unknown_method`
+/// Parses `auto`, `buchberger`, `modular` and `f4`; throws InputError `unknown_method`
 /// (field "method") otherwise.
 GroebnerMethod parse_groebner_method(const std::string& name);
 
-/// "auto", "buchberger" or "modular".
+/// "auto", "buchberger", "modular" or "f4".
 const char* to_string(GroebnerMethod method);
 
-/// What answered a computation by method: `buchberger` or `modular` (never
-/// `automatic`), with the modular computation's counters when it answered.
+/// What answered a computation by method: `buchberger`, `modular` or `f4` (never
+/// `automatic`), with the modular computation's counters when one of the modular
+/// routes answered.
 struct GroebnerRoute {
   GroebnerMethod method = GroebnerMethod::buchberger;
   std::optional<ModularGroebnerStats> modular;

@@ -1,0 +1,127 @@
+#!/usr/bin/env python3
+"""Times reduced Gröbner bases (grevlex) of the classic ideals, ours beside Giac's,
+Singular's and Macaulay2's, in one run, each as a whole process.
+
+    python3 bench/groebner_peers.py [--ideals cyclic5,katsura5,...] [--timeout S]
+        [--methods modular,auto] [--giac /tmp/giac_gbasis] [--bin build/bin/implicitizer]
+
+Ours runs `implicitizer groebner --order grevlex --method M --json` and the table also
+shows, from its JSON, the time of the runs modulo primes and of the proof over Q.
+Giac's driver is /work/shared/bench/peers/giac_gbasis.cpp built into /tmp (its
+README), run with one thread; Singular runs `std` with redSB and redTail; Macaulay2
+`gb`. A run past --timeout prints "> T". The ideals are ../shared/bench/gb/ideals.json.
+Prints a Markdown table (docs/benchmarks.md records it with the command).
+"""
+
+import argparse
+import json
+import os
+import subprocess
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+IDEALS = os.path.join(ROOT, "..", "shared", "bench", "gb", "ideals.json")
+if not os.path.exists(IDEALS):
+    IDEALS = "/work/shared/bench/gb/ideals.json"
+
+
+def timed(command, timeout, stdin=None):
+    """(seconds, stdout) of a whole process, or (None, "") past the timeout."""
+    start = time.monotonic()
+    try:
+        done = subprocess.run(command, input=stdin, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return None, ""
+    elapsed = time.monotonic() - start
+    if done.returncode != 0:
+        return None, "exit %d: %s" % (done.returncode, done.stderr.strip()[:200])
+    return elapsed, done.stdout
+
+
+def ours(binary, ideal, method, timeout):
+    command = [binary, "groebner", "--vars", ",".join(ideal["vars"]), "--order", "grevlex", "--method", method,
+               "--json", "--timeout", str(timeout)] + ideal["polys"]
+    seconds, out = timed(command, timeout + 5)
+    if seconds is None:
+        return None, out
+    answer = json.loads(out)
+    modular = answer["stats"].get("modular", {})
+    detail = "%d elements, route %s" % (len(answer["basis"]), answer.get("method", "?"))
+    if modular:
+        detail += ": %d primes, modular %.2f s, lift %.2f s, proof %.2f s" % (
+            modular.get("primes", 0), modular.get("modular_ms", 0) / 1000,
+            modular.get("lift_ms", 0) / 1000, modular.get("verify_ms", 0) / 1000)
+    return seconds, detail
+
+
+def giac(binary, ideal, timeout):
+    seconds, out = timed([binary, ",".join(ideal["polys"]), ",".join(ideal["vars"]), "1"], timeout)
+    return seconds, (out.split()[0] + " elements" if seconds is not None and out.split() else out)
+
+
+def singular(ideal, timeout):
+    script = ("ring r = 0, (%s), dp;\noption(redSB); option(redTail);\nideal I = %s;\nideal G = std(I);\n"
+              "size(G);\nquit;\n") % (",".join(ideal["vars"]), ",".join(ideal["polys"]))
+    seconds, out = timed(["Singular", "-q", "--no-rc"], timeout, stdin=script)
+    return seconds, (out.strip() + " elements" if seconds is not None else out)
+
+
+def macaulay2(ideal, timeout):
+    script = ("R = QQ[%s, MonomialOrder => GRevLex];\nI = ideal(%s);\nG = gb I;\n"
+              "print numcols gens G;\nexit 0;\n") % (",".join(ideal["vars"]), ",".join(ideal["polys"]))
+    with tempfile.NamedTemporaryFile("w", suffix=".m2", delete=False) as f:
+        f.write(script)
+        path = f.name
+    try:
+        seconds, out = timed(["M2", "--script", path], timeout)
+    finally:
+        os.unlink(path)
+    return seconds, (out.strip() + " elements" if seconds is not None else out)
+
+
+def show(seconds, timeout):
+    return "> %g s" % timeout if seconds is None else "%.2f s" % seconds
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--ideals", default="cyclic5,cyclic6,cyclic7,katsura5,katsura6,katsura7,katsura8")
+    parser.add_argument("--methods", default="modular")
+    parser.add_argument("--timeout", type=float, default=120)
+    parser.add_argument("--giac", default="/tmp/giac_gbasis")
+    parser.add_argument("--bin", default=os.path.join(ROOT, "build", "bin", "implicitizer"))
+    parser.add_argument("--peers", default="giac,singular,m2")
+    args = parser.parse_args()
+    with open(IDEALS) as f:
+        ideals = {i["name"]: i for i in json.load(f)}
+    methods = args.methods.split(",")
+    peers = [p for p in args.peers.split(",") if p]
+    print("| ideal | " + " | ".join("ours (%s)" % m for m in methods) + " | " + " | ".join(peers) + " |")
+    print("|---" * (1 + len(methods) + len(peers)) + "|")
+    notes = []
+    for name in args.ideals.split(","):
+        ideal = ideals[name]
+        cells = []
+        for method in methods:
+            seconds, detail = ours(args.bin, ideal, method, args.timeout)
+            cells.append(show(seconds, args.timeout))
+            notes.append("%s, ours (%s): %s" % (name, method, detail))
+        for peer in peers:
+            if peer == "giac":
+                seconds, detail = giac(args.giac, ideal, args.timeout)
+            elif peer == "singular":
+                seconds, detail = singular(ideal, args.timeout)
+            else:
+                seconds, detail = macaulay2(ideal, args.timeout)
+            cells.append(show(seconds, args.timeout))
+            notes.append("%s, %s: %s" % (name, peer, detail))
+        print("| %s | %s |" % (name, " | ".join(cells)), flush=True)
+    print()
+    for n in notes:
+        print("- " + n)
+
+
+if __name__ == "__main__":
+    main()

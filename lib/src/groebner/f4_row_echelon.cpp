@@ -1,0 +1,91 @@
+#include "f4_row_echelon.hpp"
+
+#include "reducer.hpp"
+
+namespace implicitizer::detail {
+
+namespace {
+
+constexpr const char* kWhere = "F4 matrix reduction";
+
+// Rows between two budget checks: a row of the largest matrices measured (cyclic-7)
+// costs well under a millisecond, so a stop is noticed within a few milliseconds.
+constexpr std::size_t kRowsPerCheck = 8;
+
+// Reduces the accumulator from column `start` on: every column with a pivot is
+// eliminated, the others are moved (reduced modulo p) into `out`. Leaves the
+// accumulator zero. `kDelayed`: entries in [0, p²), else in [0, p).
+template <bool kDelayed>
+std::uint64_t eliminate_dense(std::vector<std::uint64_t>& acc, std::uint32_t start,
+                              const std::vector<const MatrixRow*>& pivot, const nmod_t& modulus, MatrixRow& out) {
+  const std::uint64_t p = modulus.n;
+  const std::uint64_t p2 = kDelayed ? p * p : 0;
+  std::uint64_t terms = 0;
+  for (std::size_t c = start; c < acc.size(); ++c) {
+    std::uint64_t v = acc[c];
+    if (v == 0) continue;
+    acc[c] = 0;
+    if constexpr (kDelayed) NMOD_RED(v, v, modulus);
+    if (v == 0) continue;
+    const MatrixRow* r = pivot[c];
+    if (r == nullptr) {
+      out.columns.push_back(static_cast<std::uint32_t>(c));
+      out.owned.push_back(v);
+      continue;
+    }
+    // acc −= v·r, the pivot being monic: its leading column is the one just cleared.
+    const std::size_t n = r->size();
+    const std::uint32_t* cols = r->columns.data();
+    const std::uint64_t* coefs = r->coefficients;
+    terms += n;
+    if constexpr (kDelayed) {
+      const std::uint64_t factor = p - v;
+      for (std::size_t i = 1; i < n; ++i) {
+        const std::uint64_t x = acc[cols[i]] + factor * coefs[i];
+        acc[cols[i]] = x >= p2 ? x - p2 : x;
+      }
+    } else {
+      for (std::size_t i = 1; i < n; ++i) {
+        acc[cols[i]] = nmod_sub(acc[cols[i]], nmod_mul(v, coefs[i], modulus), modulus);
+      }
+    }
+  }
+  return terms;
+}
+
+void make_monic(MatrixRow& row, const nmod_t& modulus) {
+  const std::uint64_t inverse = nmod_inv(row.owned.front(), modulus);
+  for (auto& c : row.owned) c = nmod_mul(c, inverse, modulus);
+  row.coefficients = row.owned.data();
+}
+
+}  // namespace
+
+EchelonResult reduce_to_row_echelon(const MacaulayMatrix& matrix, const nmod_t& modulus, const Budget& budget) {
+  EchelonResult result;
+  std::vector<const MatrixRow*> pivot(matrix.columns, nullptr);
+  for (const MatrixRow& r : matrix.pivots) pivot[r.lead()] = &r;
+  // Reserved: the pivot table points into new_rows as rows are found.
+  result.new_rows.reserve(matrix.to_reduce.size());
+  std::vector<std::uint64_t> acc(matrix.columns, 0);
+  const bool delayed = modulus.n < (std::uint64_t{1} << 31);
+  for (std::size_t k = 0; k < matrix.to_reduce.size(); ++k) {
+    if (k % kRowsPerCheck == 0) budget.check(kWhere);
+    const MatrixRow& row = matrix.to_reduce[k];
+    for (std::size_t i = 0; i < row.size(); ++i) acc[row.columns[i]] = row.coefficients[i];
+    MatrixRow out;
+    const std::uint64_t terms = delayed ? eliminate_dense<true>(acc, row.lead(), pivot, modulus, out)
+                                        : eliminate_dense<false>(acc, row.lead(), pivot, modulus, out);
+    const std::uint64_t work = kWorkPerStep + kWorkPerModularTerm * (terms + row.size());
+    result.work += work;
+    budget.charge_work(work, kWhere);
+    if (out.columns.empty()) continue;
+    budget.check_terms(out.size(), kWhere);
+    make_monic(out, modulus);
+    result.new_rows.push_back(std::move(out));
+    pivot[result.new_rows.back().lead()] = &result.new_rows.back();
+  }
+  return result;
+}
+
+}  // namespace implicitizer::detail
