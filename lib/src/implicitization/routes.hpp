@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "implicitizer/implicitization/implicit_support.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 
 namespace implicitizer {
@@ -38,6 +39,11 @@ std::optional<ImplicitizeResult> modular_groebner_route(const Parametrization& p
 /// nullopt when the degree is proven higher. Verified by the route itself.
 std::optional<ImplicitizeResult> interpolation_route_up_to(const Parametrization& parametrization,
                                                            std::int32_t max_degree, const Budget& budget);
+
+/// The interpolation route on a predicted support (sparse_interpolation.hpp): nullopt
+/// when the prediction does not give the equation. Verified and proven by the route.
+std::optional<ImplicitizeResult> sparse_interpolation_route(const Parametrization& parametrization,
+                                                            const ImplicitSupport& support, const Budget& budget);
 
 /// The whole interpolation route.
 ImplicitizeResult interpolation_route(const Parametrization& parametrization, const Budget& budget);
