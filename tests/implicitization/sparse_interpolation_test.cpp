@@ -49,6 +49,18 @@ TEST(SparseInterpolation, AutoTakesItForS7t7) {
   EXPECT_TRUE(testing::equal_up_to_scalar(r.implicit, expected_s7t7()));
 }
 
+TEST(SparseInterpolation, MethodInterpolationTakesItWhereTheDenseMatrixIsTooLarge) {
+  // The dense bound 49 needs 22,100 columns, past the limit of 3,000: the route used to refuse.
+  ImplicitizeParams options;
+  options.method = ImplicitizationMethod::interpolation;
+  const ImplicitizeResult r = implicitize(s7t7(), options);
+  EXPECT_EQ(r.method, "interpolation");
+  EXPECT_TRUE(r.verified);
+  ASSERT_TRUE(r.interpolation_stats);
+  EXPECT_LE(r.interpolation_stats->columns, 200u);
+  EXPECT_TRUE(testing::equal_up_to_scalar(r.implicit, expected_s7t7()));
+}
+
 // A map as numerators and one denominator, for the route and for Singular.
 struct SparseMap {
   std::string x, y, z, denominator;

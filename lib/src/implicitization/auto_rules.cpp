@@ -9,6 +9,7 @@
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicit_support.hpp"
 #include "implicitizer/implicitization/interpolation.hpp"
+#include "implicitizer/implicitization/sparse_interpolation.hpp"
 #include "routes.hpp"
 
 namespace implicitizer {
@@ -25,10 +26,6 @@ constexpr std::int32_t kSmallDegree = 4;
 /// at 1/7 (enneper, 4 classes of 66 against 220) Buchberger's head start of rule 5
 /// answers first and faster (docs/algorithms.md).
 constexpr double kSparseShareOfDense = 1.0 / 64;
-/// Rule 3b: and at most this many cubed columns in all, about a second of row
-/// reductions per prime, so that a prediction that fails (a map of degree > 1 makes
-/// the box too loose) costs little before the next rule.
-constexpr double kSparseMaxCubedColumns = 2e9;
 /// Rules 3 and 6: Buchberger's head start, in milliseconds of its work, before the
 /// probe (two parameters) or before interpolation (no resultant).
 constexpr double kBaseHeadStartMs = 0.5;
@@ -143,12 +140,6 @@ Answer buchberger_before_probe(AutoState& s) {
                     "groebner: Buchberger finished within its head start, before the resultant's probe");
 }
 
-/// C(d + 3, 3): the monomials of degree ≤ d in space, the dense kernel's columns.
-double monomial_count_in_space(std::int32_t d) {
-  const double e = d;
-  return (e + 1) * (e + 2) * (e + 3) / 6;
-}
-
 /// Rule 3b: a sparse surface in two parameters by interpolation on its predicted
 /// support (implicit_support.hpp), when that is far cheaper than the dense kernels.
 /// Passes when the prediction does not give the equation (a map of degree > 1).
@@ -156,7 +147,7 @@ Answer sparse_support_by_interpolation(AutoState& s) {
   if (!is_surface_in_two_parameters(s)) return std::nullopt;
   const std::optional<ImplicitSupport> support = predict_implicit_support(s.p);
   if (!support || support->largest_class > InterpolationParams{}.max_columns) return std::nullopt;
-  const double dense = monomial_count_in_space(implicit_degree_bound(s.p));
+  const double dense = space_monomial_count(implicit_degree_bound(s.p));
   if (support->cubed_columns > std::min(kSparseMaxCubedColumns, kSparseShareOfDense * dense * dense * dense)) {
     return std::nullopt;
   }

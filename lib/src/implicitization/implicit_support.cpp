@@ -154,6 +154,11 @@ std::int64_t mixed_volume(const std::vector<Point>& p, const std::vector<Point>&
   return (doubled_area(sum) - doubled_area(p) - doubled_area(q)) / 2;
 }
 
+double space_monomial_count(std::int32_t d) {
+  const double e = d;
+  return (e + 1) * (e + 2) * (e + 3) / 6;
+}
+
 std::optional<ImplicitSupport> predict_implicit_support(const Parametrization& parametrization) {
   if (parametrization.coordinates.size() != 3 || parametrization.parameter_ring->num_variables() != 2) {
     return std::nullopt;

@@ -44,6 +44,7 @@ struct MapForms {
   std::vector<std::vector<IntegerPolynomial>> partials;  // partials[i][j] = ∂(form i)/∂(parameter j)
 };
 
+/// The forms of `p` (common_denominator_form), scaled to integers, with their partials.
 MapForms map_forms(const Parametrization& p);
 
 /// Powers a_j^e of the coordinates of a point, e ≤ top[j].
@@ -168,9 +169,9 @@ class ModularMap {
 /// that bounds in the millions do not overflow.
 double monomial_count(std::size_t n, std::int64_t d);
 
-/// The monomials of degree ≤ d in n variables in decreasing grevlex (x > y > z), the
-/// contract's order: the columns of the evaluation matrix, so that the first non-zero
-/// entry of a kernel vector is the leading term of its polynomial.
+/// Monomials in decreasing grevlex (x > y > z), the contract's order: the columns of
+/// the evaluation matrix, so that the first non-zero entry of a kernel vector is the
+/// leading term of its polynomial.
 struct MonomialBasis {
   std::int32_t degree = 0;
   std::size_t variables = 0;
@@ -179,6 +180,7 @@ struct MonomialBasis {
   const std::int32_t* at(std::size_t column) const { return exponents.data() + column * variables; }
 };
 
+/// The monomials of degree ≤ d in n variables.
 MonomialBasis monomial_basis(std::size_t n, std::int32_t d);
 
 /// The monomials `exponents` (n per monomial, distinct) as a basis: in decreasing grevlex,
@@ -214,6 +216,7 @@ std::optional<std::int32_t> degree_from_nullity(std::int32_t d, std::size_t null
 /// rank needs the exact minors.
 void check_image_dimension(const MapForms& m, std::uint64_t seed, const Budget& budget);
 
+/// implicit_degree_bound() (interpolation.hpp) of the forms, before its cap.
 std::int64_t degree_bound_of(const MapForms& m);
 
 /// The polynomial with `coefficients` on the columns of `basis`, in implicit_ring(n).

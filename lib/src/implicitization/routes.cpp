@@ -171,6 +171,17 @@ std::optional<ImplicitizeResult> sparse_interpolation_route(const Parametrizatio
 }
 
 ImplicitizeResult interpolation_route(const Parametrization& p, const Budget& budget) {
+  // Where the dense matrix at the degree bound would pass its column limit (the dense
+  // route may still find a lower degree below it, or refuse), a predicted support
+  // that fits is tried first: sparse_s7t7 (degree 49) answers in 0.3 s instead of a
+  // refusal.
+  const std::size_t max_columns = InterpolationParams{}.max_columns;
+  if (p.coordinates.size() == 3 && space_monomial_count(implicit_degree_bound(p)) > static_cast<double>(max_columns)) {
+    const std::optional<ImplicitSupport> support = predict_implicit_support(p);
+    if (support && support->largest_class <= max_columns && support->cubed_columns <= kSparseMaxCubedColumns) {
+      if (auto sparse = sparse_interpolation_route(p, *support, budget)) return std::move(*sparse);
+    }
+  }
   // Never nullopt: no degree is above the largest there is.
   return *interpolation_route_up_to(p, kMaxTotalDegree, budget);
 }

@@ -45,7 +45,9 @@ std::optional<ImplicitizeResult> interpolation_route_up_to(const Parametrization
 std::optional<ImplicitizeResult> sparse_interpolation_route(const Parametrization& parametrization,
                                                             const ImplicitSupport& support, const Budget& budget);
 
-/// The whole interpolation route.
+/// The whole interpolation route; where the dense matrix at the degree bound would
+/// pass its column limit, first the predicted support (when its classes fit and cost
+/// at most kSparseMaxCubedColumns), then the dense route if that falls back.
 ImplicitizeResult interpolation_route(const Parametrization& parametrization, const Budget& budget);
 
 /// The resultant route (Theorem 1.13: the square-free part of the auxiliary resultant,

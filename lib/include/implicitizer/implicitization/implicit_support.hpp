@@ -58,6 +58,10 @@ struct ImplicitSupport {
 /// class of it could be a kernel of useful size anyway.
 inline constexpr double kMaxPredictedBox = 2e6;
 
+/// C(d + 3, 3): the monomials of degree ≤ d in space, the dense kernel's columns that a
+/// prediction is compared with (a double: bounds in the millions do not overflow).
+double space_monomial_count(std::int32_t d);
+
 /// The predicted support of the implicit equation of a surface in two parameters
 /// (three coordinates), as the header describes. nullopt for other parametrizations
 /// and when the box has more than kMaxPredictedBox monomials.

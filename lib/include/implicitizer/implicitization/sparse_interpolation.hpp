@@ -36,6 +36,12 @@ namespace implicitizer {
 /// second one almost always settles a class that is empty over ℚ.
 inline constexpr std::size_t kSparseScanPrimes = 3;
 
+/// The routes that try the predicted support before another answer (auto's rule 3b, and
+/// interpolation where the dense matrix is too large) take it only when its kernels add
+/// up to at most this many cubed columns: about a second of row reductions per prime,
+/// so that a prediction that falls back (a map of degree > 1) costs little.
+inline constexpr double kSparseMaxCubedColumns = 2e9;
+
 /// The implicit equation of a surface in two parameters by interpolation on
 /// `support` (predict_implicit_support(parametrization)), proven as the header says;
 /// `options` as for implicitize_by_interpolation() (budget, primes, seed, max_columns
