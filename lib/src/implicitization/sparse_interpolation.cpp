@@ -124,7 +124,6 @@ class SparseLift {
   // Takes one kernel of the chosen class; returns the proven equation when this one
   // completes it.
   std::optional<Polynomial> take(KernelImage image) {
-    stats_.rejected_points += image.rejected_points;
     if (!image.enough_points || image.nullity != 1) {
       ++stats_.unlucky_primes;  // a larger kernel than the scan's: the prime is unlucky
       return std::nullopt;
@@ -216,7 +215,9 @@ std::optional<InterpolationResult> implicitize_by_sparse_interpolation(const Par
   for (std::size_t taken = kSparseScanPrimes; !answer; ++taken) {
     if (taken >= options.max_primes) return std::nullopt;
     options.budget.check("sparse interpolation");
-    answer = lift.take(kernel_modulo(forms, basis, primes.next(), options.seed, options.budget));
+    KernelImage image = kernel_modulo(forms, basis, primes.next(), options.seed, options.budget);
+    stats.rejected_points += image.rejected_points;
+    answer = lift.take(std::move(image));
   }
   stats.images_ms = images_timer.elapsed_ms();
   stats.degree = answer->total_degree();

@@ -50,7 +50,9 @@ inline constexpr double kSparseMaxCubedColumns = 2e9;
 /// candidate verifies within max_primes primes: the caller falls back. Throws
 /// NoSingleEquation when the image is not a surface, LimitExceeded (size: a class
 /// larger than max_columns; time, cancelled), std::invalid_argument unless there are
-/// three coordinates and two parameters.
+/// three coordinates and two parameters. In the stats, degree_bound is the box's total
+/// degree, degree_probes the kernels of the scan over the classes, search_ms its time,
+/// columns the class of the answer.
 std::optional<InterpolationResult> implicitize_by_sparse_interpolation(const Parametrization& parametrization,
                                                                        const ImplicitSupport& support,
                                                                        const InterpolationParams& options = {});
