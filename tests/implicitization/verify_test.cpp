@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "implicitization/surfaces.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 #include "implicitizer/polynomial/parser.hpp"
-#include "implicitization/surfaces.hpp"
 
 namespace implicitizer {
 namespace {

@@ -7,6 +7,9 @@
 #include <vector>
 
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/implicitization/implicit_support.hpp"
+#include "implicitizer/implicitization/interpolation.hpp"
+#include "implicitizer/implicitization/sparse_interpolation.hpp"
 #include "routes.hpp"
 
 namespace implicitizer {
@@ -18,6 +21,11 @@ namespace {
 /// Rule 2: the degree up to which interpolation goes first (kernels of at most 35
 /// columns, which also prove a higher degree cheaply).
 constexpr std::int32_t kSmallDegree = 4;
+/// Rule 3b: the predicted support is taken when its kernels cost at most this share of
+/// the dense kernel at the degree bound (in cubed columns, the row reductions' cost):
+/// at 1/7 (enneper, 4 classes of 66 against 220) Buchberger's head start of rule 5
+/// answers first and faster (docs/algorithms.md).
+constexpr double kSparseShareOfDense = 1.0 / 64;
 /// Rules 3 and 6: Buchberger's head start, in milliseconds of its work, before the
 /// probe (two parameters) or before interpolation (no resultant).
 constexpr double kBaseHeadStartMs = 0.5;
@@ -132,6 +140,23 @@ Answer buchberger_before_probe(AutoState& s) {
                     "groebner: Buchberger finished within its head start, before the resultant's probe");
 }
 
+/// Rule 3b: a sparse surface in two parameters by interpolation on its predicted
+/// support (implicit_support.hpp), when that is far cheaper than the dense kernels.
+/// Passes when the prediction does not give the equation (a map of degree > 1).
+Answer sparse_support_by_interpolation(AutoState& s) {
+  if (!is_surface_in_two_parameters(s)) return std::nullopt;
+  const std::optional<ImplicitSupport> support = predict_implicit_support(s.p);
+  if (!support || support->largest_class > InterpolationParams{}.max_columns) return std::nullopt;
+  const double dense = space_monomial_count(implicit_degree_bound(s.p));
+  if (support->cubed_columns > std::min(kSparseMaxCubedColumns, kSparseShareOfDense * dense * dense * dense)) {
+    return std::nullopt;
+  }
+  return with_route(passing_size_limit([&] { return sparse_interpolation_route(s.p, *support, s.params.budget); }),
+                    "interpolation on the predicted support: " + std::to_string(support->classes.size()) +
+                        " classes of at most " + std::to_string(support->largest_class) + " monomials instead of " +
+                        std::to_string(static_cast<std::size_t>(dense)) + " dense ones");
+}
+
 /// Rule 5, first: a triangular patch gives Buchberger a head start of a share of the
 /// predicted time of what follows (interpolation or Macaulay's quotient).
 Answer buchberger_before_macaulay(AutoState& s) {
@@ -212,9 +237,11 @@ Answer buchberger_over_rationals(AutoState& s) {
 
 /// The rules in the order they are tried (docs/algorithms.md numbers them).
 constexpr Rule kRules[] = {
-    plane_curve_by_sylvester,     small_degree_by_interpolation,     buchberger_before_probe,
-    buchberger_before_macaulay,   triangular_patch_by_interpolation, resultant_without_base_points,
-    buchberger_without_resultant, interpolation_without_resultant,   modular_groebner_where_interpolation_too_large,
+    plane_curve_by_sylvester,        small_degree_by_interpolation,
+    buchberger_before_probe,         sparse_support_by_interpolation,
+    buchberger_before_macaulay,      triangular_patch_by_interpolation,
+    resultant_without_base_points,   buchberger_without_resultant,
+    interpolation_without_resultant, modular_groebner_where_interpolation_too_large,
     buchberger_over_rationals,
 };
 

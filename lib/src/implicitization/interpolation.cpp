@@ -17,11 +17,14 @@
 
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/core/stopwatch.hpp"
+#include "implicitizer/implicitization/implicit_support.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
+#include "implicitizer/implicitization/sparse_interpolation.hpp"
 #include "implicitizer/implicitization/verify.hpp"
 #include "implicitizer/modular/crt_lift.hpp"
 #include "implicitizer/modular/flint_handles.hpp"
 #include "implicitizer/modular/one_per_thread.hpp"
+#include "interpolation_kernel.hpp"
 
 namespace implicitizer {
 
@@ -29,10 +32,6 @@ namespace {
 
 // The most primes computed at once (see batch_threads).
 constexpr unsigned kMaxThreads = 4;
-
-// Rows beyond the number of columns: C(d + n, n) points in general position already
-// determine the kernel; the extra ones absorb points that repeat an image point.
-constexpr std::size_t kExtraRows = 8;
 
 // A bound whose matrix has at most this many columns (degree 4 in space, 7 in the
 // plane) is taken at once, without the upward search: a 39×35 kernel costs about as
@@ -45,477 +44,6 @@ constexpr double kDirectColumns = 36;
 // prediction (refuse_kernel_past_deadline); smaller ones are mostly evaluation and
 // set-up, whose cost does not grow as the cube.
 constexpr double kTimedColumns = 200;
-
-// The lift of the normalized kernel vector (leading coefficient 1, so each entry is
-// F_i / F_lead for the primitive equation F: the denominators all divide F_lead).
-// A value is accepted only with 20 bits to spare, so that a residue that is not yet
-// the image of a small rational is taken for one with probability about 2^-20; such
-// a false value is refuted by the next prime, and the candidate is verified anyway.
-constexpr CrtLiftParams kLiftParams{.margin_bits = 20, .shared_denominator = true};
-
-// ---------------------------------------------------------------- the forms
-
-// An integer polynomial as plain data. Threads read these concurrently, which they
-// could not do with Polynomial: CGAL's rationals count references without atomics.
-struct IntegerPolynomial {
-  std::vector<Integer> coefficients;
-  std::vector<std::int32_t> exponents;  // num_variables per term
-};
-
-// `p`, whose coefficients are integers (precondition), as plain data.
-IntegerPolynomial integer_polynomial(const Polynomial& p) {
-  IntegerPolynomial out;
-  const Ring& ring = *p.ring();
-  const std::size_t k = ring.num_variables();
-  const Integer content = p.is_zero() ? Integer(0) : to_integer(p.content());
-  for (std::size_t t = 0; t < p.num_terms(); ++t) {
-    out.coefficients.push_back(content * p.integer_coefficients()[t]);
-    const std::int32_t* e = ring.exponents(p.monomial(t));
-    out.exponents.insert(out.exponents.end(), e, e + k);
-  }
-  return out;
-}
-
-// ∂p/∂(variable j) of `p` in k variables, on the plain data (terms in p's order;
-// only evaluated, so no order is needed): cheaper than Polynomial::derivative, which
-// on a small surface cost a tenth of the route.
-IntegerPolynomial partial_derivative(const IntegerPolynomial& p, std::size_t k, std::size_t j) {
-  IntegerPolynomial out;
-  for (std::size_t t = 0; t < p.coefficients.size(); ++t) {
-    const std::int32_t* e = p.exponents.data() + t * k;
-    if (e[j] == 0) continue;
-    out.coefficients.push_back(p.coefficients[t] * e[j]);
-    out.exponents.insert(out.exponents.end(), e, e + k);
-    --out.exponents[out.exponents.size() - k + j];
-  }
-  return out;
-}
-
-// ω, ξ_1, …, ξ_n of common_denominator_form() scaled to integers (the map does not
-// change), with their first derivatives for the Jacobian.
-struct MapForms {
-  std::size_t parameters = 0;                            // k
-  std::size_t coordinates = 0;                           // n
-  std::vector<Polynomial> exact;                         // ω, ξ_1, …, ξ_n
-  std::vector<IntegerPolynomial> forms;                  // the same as plain data
-  std::vector<std::vector<IntegerPolynomial>> partials;  // partials[i][j] = ∂(form i)/∂(parameter j)
-};
-
-MapForms map_forms(const Parametrization& p) {
-  MapForms m;
-  m.parameters = p.parameter_ring->num_variables();
-  m.coordinates = p.coordinates.size();
-  m.exact = common_denominator_form(p);
-  scale_to_integers(m.exact);
-  for (const Polynomial& f : m.exact) {
-    m.forms.push_back(integer_polynomial(f));
-    std::vector<IntegerPolynomial> row;
-    for (std::size_t j = 0; j < m.parameters; ++j) row.push_back(partial_derivative(m.forms.back(), m.parameters, j));
-    m.partials.push_back(std::move(row));
-  }
-  return m;
-}
-
-// ---------------------------------------------------------------- modulo a prime
-
-// Powers a_j^e of the coordinates of a point, e ≤ top[j].
-class PowerTable {
- public:
-  explicit PowerTable(const std::vector<std::int32_t>& top) : powers_(top.size()) {
-    for (std::size_t j = 0; j < top.size(); ++j) powers_[j].resize(static_cast<std::size_t>(top[j]) + 1);
-  }
-  void fill(const std::vector<mp_limb_t>& point, nmod_t mod) {
-    for (std::size_t j = 0; j < powers_.size(); ++j) {
-      auto& row = powers_[j];
-      row[0] = 1;
-      for (std::size_t e = 1; e < row.size(); ++e) row[e] = nmod_mul(row[e - 1], point[j], mod);
-    }
-  }
-  mp_limb_t at(std::size_t j, std::int32_t e) const { return powers_[j][static_cast<std::size_t>(e)]; }
-
- private:
-  std::vector<std::vector<mp_limb_t>> powers_;
-};
-
-// An IntegerPolynomial reduced modulo a prime.
-class ModularPolynomial {
- public:
-  ModularPolynomial(const IntegerPolynomial& p, std::size_t num_variables, nmod_t mod) : k_(num_variables), mod_(mod) {
-    for (std::size_t t = 0; t < p.coefficients.size(); ++t) {
-      const mp_limb_t c = mpz_fdiv_ui(p.coefficients[t].get_mpz_t(), mod.n);
-      if (c == 0) continue;
-      coefficients_.push_back(c);
-      exponents_.insert(exponents_.end(), p.exponents.begin() + static_cast<std::ptrdiff_t>(t * k_),
-                        p.exponents.begin() + static_cast<std::ptrdiff_t>((t + 1) * k_));
-    }
-  }
-  // The largest exponent of each variable.
-  void raise_top(std::vector<std::int32_t>& top) const {
-    for (std::size_t t = 0; t < coefficients_.size(); ++t) {
-      for (std::size_t j = 0; j < k_; ++j) top[j] = std::max(top[j], exponents_[t * k_ + j]);
-    }
-  }
-  mp_limb_t evaluate(const PowerTable& powers) const {
-    mp_limb_t sum = 0;
-    for (std::size_t t = 0; t < coefficients_.size(); ++t) {
-      mp_limb_t term = coefficients_[t];
-      for (std::size_t j = 0; j < k_; ++j) term = nmod_mul(term, powers.at(j, exponents_[t * k_ + j]), mod_);
-      sum = nmod_add(sum, term, mod_);
-    }
-    return sum;
-  }
-
- private:
-  std::size_t k_;
-  nmod_t mod_;
-  std::vector<mp_limb_t> coefficients_;
-  std::vector<std::int32_t> exponents_;
-};
-
-// The parametrization modulo p: the image ξ(a)/ω(a) of a parameter point a, and
-// optionally the Jacobian there.
-class ModularMap {
- public:
-  ModularMap(const MapForms& m, nmod_t mod, bool with_partials)
-      : k_(m.parameters), n_(m.coordinates), mod_(mod), values_(n_ + 1) {
-    std::vector<std::int32_t> top(k_, 0);
-    for (std::size_t i = 0; i <= n_; ++i) {
-      forms_.emplace_back(m.forms[i], k_, mod);
-      forms_.back().raise_top(top);
-      if (with_partials) {
-        for (std::size_t j = 0; j < k_; ++j) {
-          partials_.emplace_back(m.partials[i][j], k_, mod);
-          partials_.back().raise_top(top);
-        }
-      }
-    }
-    table_.emplace(top);
-  }
-
-  // Sets x to ξ(a)/ω(a); false (x unchanged) when ω(a) ≡ 0 mod p.
-  bool image(const std::vector<mp_limb_t>& a, std::vector<mp_limb_t>& x) {
-    if (!evaluate_forms(a)) return false;
-    const mp_limb_t inverse = n_invmod(values_[0], mod_.n);
-    for (std::size_t i = 0; i < n_; ++i) x[i] = nmod_mul(values_[i + 1], inverse, mod_);
-    return true;
-  }
-
-  // The rank modulo p of the Jacobian of ξ/ω at a, from its numerators
-  // ∂ξ_i/∂a_j·ω − ξ_i·∂ω/∂a_j (the Jacobian times ω², the same rank); nullopt when
-  // ω(a) ≡ 0. Precondition: constructed with_partials.
-  std::optional<std::size_t> jacobian_rank(const std::vector<mp_limb_t>& a) {
-    if (!evaluate_forms(a)) return std::nullopt;
-    if (k_ == 0) return 0;
-    NmodMatrix j(n_, k_, mod_.n);
-    for (std::size_t i = 0; i < n_; ++i) {
-      for (std::size_t v = 0; v < k_; ++v) {
-        const mp_limb_t d_xi = partials_[(i + 1) * k_ + v].evaluate(*table_);
-        const mp_limb_t d_omega = partials_[v].evaluate(*table_);
-        nmod_mat_entry(j.get(), i, v) =
-            nmod_sub(nmod_mul(d_xi, values_[0], mod_), nmod_mul(values_[i + 1], d_omega, mod_), mod_);
-      }
-    }
-    return static_cast<std::size_t>(nmod_mat_rank(j.get()));
-  }
-
- private:
-  bool evaluate_forms(const std::vector<mp_limb_t>& a) {
-    table_->fill(a, mod_);
-    values_[0] = forms_[0].evaluate(*table_);
-    if (values_[0] == 0) return false;
-    for (std::size_t i = 1; i <= n_; ++i) values_[i] = forms_[i].evaluate(*table_);
-    return true;
-  }
-
-  std::size_t k_;
-  std::size_t n_;
-  nmod_t mod_;
-  std::vector<ModularPolynomial> forms_;
-  std::vector<ModularPolynomial> partials_;  // (form i, parameter j) at i·k + j
-  std::optional<PowerTable> table_;
-  std::vector<mp_limb_t> values_;  // ω(a), ξ_1(a), …
-};
-
-// ---------------------------------------------------------------- the matrix
-
-// C(d + n, n): the number of monomials of degree ≤ d in n variables, as a double so
-// that bounds in the millions do not overflow.
-double monomial_count(std::size_t n, std::int64_t d) {
-  if (d < 0) return 0;
-  double count = 1;
-  for (std::size_t i = 1; i <= n; ++i) {
-    count = count * static_cast<double>(d + static_cast<std::int64_t>(i)) / static_cast<double>(i);
-  }
-  return std::round(count);
-}
-
-// The monomials of degree ≤ d in n variables in decreasing grevlex (x > y > z), the
-// contract's order: the columns of the evaluation matrix, so that the first non-zero
-// entry of a kernel vector is the leading term of its polynomial.
-struct MonomialBasis {
-  std::int32_t degree = 0;
-  std::size_t variables = 0;
-  std::vector<std::int32_t> exponents;  // `variables` per monomial
-  std::size_t size() const { return exponents.size() / variables; }
-  const std::int32_t* at(std::size_t column) const { return exponents.data() + column * variables; }
-};
-
-MonomialBasis monomial_basis(std::size_t n, std::int32_t d) {
-  const RingPtr ring = implicit_ring(n);
-  const std::size_t w = ring->monomial_size();
-  std::vector<std::vector<std::int32_t>> all;
-  std::vector<std::int32_t> e(n, 0);
-  // Every exponent vector with entries summing to at most d, odometer style.
-  for (bool more = true; more;) {
-    all.push_back(e);
-    more = false;
-    for (std::size_t v = 0; v < n; ++v) {
-      std::int32_t sum = 0;
-      for (std::int32_t x : e) sum += x;
-      if (sum < d) {
-        ++e[v];
-        more = true;
-        break;
-      }
-      e[v] = 0;
-    }
-  }
-  std::vector<std::int32_t> encoded(all.size() * w);
-  for (std::size_t i = 0; i < all.size(); ++i) ring->encode(all[i].data(), encoded.data() + i * w);
-  std::vector<std::size_t> order(all.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return ring->compare(encoded.data() + a * w, encoded.data() + b * w) > 0;
-  });
-  MonomialBasis basis;
-  basis.degree = d;
-  basis.variables = n;
-  for (std::size_t i : order) basis.exponents.insert(basis.exponents.end(), all[i].begin(), all[i].end());
-  return basis;
-}
-
-// The kernel of the evaluation matrix of `basis` modulo one prime.
-struct KernelImage {
-  mp_limb_t prime = 0;
-  std::int32_t degree = 0;
-  bool enough_points = true;  // false: too few parameter points with ω ≠ 0 mod p
-  std::size_t nullity = 0;
-  std::size_t lead = 0;           // with nullity 1: the column of the leading term
-  std::vector<mp_limb_t> vector;  // with nullity 1: the kernel, vector[lead] = 1
-  std::size_t rows = 0;
-  std::size_t rejected_points = 0;  // points where ω vanished
-};
-
-// The kernel of a matrix in reduced row echelon form (FLINT's nmod_mat_rref) with
-// one free column f: v_f = 1 and, for the pivot c of row r, v_c = −R[r][f] / R[r][c]
-// (a reduced row holds only its pivot and free entries).
-std::vector<mp_limb_t> kernel_vector_of_rref(const nmod_mat_struct* matrix, std::size_t rank, std::size_t columns,
-                                             nmod_t mod) {
-  std::vector<std::size_t> pivots(rank);
-  std::vector<char> is_pivot(columns, 0);
-  for (std::size_t r = 0, c = 0; r < rank; ++r) {
-    while (nmod_mat_entry(matrix, r, c) == 0) ++c;
-    pivots[r] = c;
-    is_pivot[c] = 1;
-  }
-  const std::size_t free_column =
-      static_cast<std::size_t>(std::find(is_pivot.begin(), is_pivot.end(), 0) - is_pivot.begin());
-  std::vector<mp_limb_t> vector(columns, 0);
-  vector[free_column] = 1;
-  for (std::size_t r = 0; r < rank; ++r) {
-    const mp_limb_t entry = nmod_mat_entry(matrix, r, free_column);
-    const mp_limb_t pivot = nmod_mat_entry(matrix, r, pivots[r]);
-    vector[pivots[r]] = nmod_neg(nmod_mul(entry, n_invmod(pivot, mod.n), mod), mod);
-  }
-  return vector;
-}
-
-// The kernel modulo p of the matrix whose rows are the monomials of `basis` at
-// points ξ(a)/ω(a) of the image, a random with ω(a) ≢ 0 and pairwise distinct.
-// Checks `budget` at every row; FLINT's row reduction itself cannot be interrupted.
-KernelImage kernel_modulo(const MapForms& forms, const MonomialBasis& basis, mp_limb_t p, std::uint64_t seed,
-                          const Budget& budget) {
-  KernelImage out;
-  out.prime = p;
-  out.degree = basis.degree;
-  nmod_t mod;
-  nmod_init(&mod, p);
-  ModularMap map(forms, mod, /*with_partials=*/false);
-  const std::size_t k = forms.parameters;
-  const std::size_t n = forms.coordinates;
-  const std::size_t columns = basis.size();
-  out.rows = columns + kExtraRows;
-  NmodMatrix matrix(out.rows, columns, p);
-
-  ResidueStream stream(seed ^ (p * 0x9e3779b97f4a7c15ULL) ^ static_cast<std::uint64_t>(basis.degree));
-  std::set<std::vector<mp_limb_t>> used;
-  std::vector<mp_limb_t> a(k), x(n);
-  PowerTable powers(std::vector<std::int32_t>(n, basis.degree));
-  // Tiny primes (tests) may not have enough points: give up after many misses.
-  const std::size_t max_attempts = 4 * out.rows + 64;
-  std::size_t attempts = 0;
-  for (std::size_t row = 0; row < out.rows;) {
-    if (attempts++ >= max_attempts) {
-      out.enough_points = false;
-      return out;
-    }
-    for (auto& v : a) v = stream.next(p);
-    if (!used.insert(a).second) continue;
-    if (!map.image(a, x)) {
-      ++out.rejected_points;
-      continue;
-    }
-    budget.check("interpolation (evaluation)");
-    powers.fill(x, mod);
-    mp_limb_t* entries = nmod_mat_entry_ptr(matrix.get(), static_cast<slong>(row), 0);
-    for (std::size_t c = 0; c < columns; ++c) {
-      const std::int32_t* e = basis.at(c);
-      mp_limb_t value = powers.at(0, e[0]);
-      for (std::size_t v = 1; v < n; ++v) value = nmod_mul(value, powers.at(v, e[v]), mod);
-      entries[c] = value;
-    }
-    ++row;
-  }
-
-  const std::size_t rank = static_cast<std::size_t>(nmod_mat_rref(matrix.get()));
-  out.nullity = columns - rank;
-  if (out.nullity != 1) return out;
-  out.vector = kernel_vector_of_rref(matrix.get(), rank, columns, mod);
-  out.lead = static_cast<std::size_t>(
-      std::find_if(out.vector.begin(), out.vector.end(), [](mp_limb_t v) { return v != 0; }) - out.vector.begin());
-  const mp_limb_t inverse = n_invmod(out.vector[out.lead], p);
-  _nmod_vec_scalar_mul_nmod(out.vector.data(), out.vector.data(), static_cast<slong>(columns), inverse, mod);
-  return out;
-}
-
-// The degree e with C(d − e + n, n) = nullity: a kernel at degree d ≥ e of the
-// equation's multiples F·(monomials of degree ≤ d − e). nullopt when no such e ≥ 1.
-std::optional<std::int32_t> degree_from_nullity(std::int32_t d, std::size_t nullity, std::size_t n) {
-  for (std::int32_t j = 0; j < d; ++j) {
-    const double count = monomial_count(n, j);
-    if (count == static_cast<double>(nullity)) return d - j;
-    if (count > static_cast<double>(nullity)) break;
-  }
-  return std::nullopt;
-}
-
-// ---------------------------------------------------------------- the dimension
-
-// Whether every (rank)-minor of the Jacobian numerators ∂ξ_i/∂a_j·ω − ξ_i·∂ω/∂a_j
-// is the zero polynomial, decided exactly (rank 1 or 2: n ≤ 3).
-bool jacobian_minors_vanish(const MapForms& m, std::size_t rank, const Budget& budget) {
-  const std::size_t k = m.parameters;
-  const std::size_t n = m.coordinates;
-  const Polynomial& omega = m.exact[0];
-  std::vector<std::vector<Polynomial>> entries(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = 0; j < k; ++j) {
-      entries[i].push_back(m.exact[i + 1].derivative(j).multiply(omega, budget) -
-                           m.exact[i + 1].multiply(omega.derivative(j), budget));
-    }
-  }
-  if (rank == 1) {
-    for (const auto& row : entries) {
-      for (const auto& e : row) {
-        if (!e.is_zero()) return false;
-      }
-    }
-    return true;
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t i2 = i + 1; i2 < n; ++i2) {
-      for (std::size_t j = 0; j < k; ++j) {
-        for (std::size_t j2 = j + 1; j2 < k; ++j2) {
-          budget.check("interpolation (Jacobian)");
-          const Polynomial minor =
-              entries[i][j].multiply(entries[i2][j2], budget) - entries[i][j2].multiply(entries[i2][j], budget);
-          if (!minor.is_zero()) return false;
-        }
-      }
-    }
-  }
-  return true;
-}
-
-// Returns when the image has dimension at least n − 1; throws NoSingleEquation when
-// it fills space or is smaller. The rank of the Jacobian at a point modulo a prime is
-// at most its rank over ℚ (a minor non-zero mod p is non-zero), which in
-// characteristic 0 is the image's dimension at a general point; only a deficient
-// rank needs the exact minors.
-void check_image_dimension(const MapForms& m, std::uint64_t seed, const Budget& budget) {
-  const std::size_t k = m.parameters;
-  const std::size_t n = m.coordinates;
-  const std::string kind = n == 3 ? "surface" : "curve";
-  const std::string not_generated =
-      "; method interpolation does not compute the generators of its ideal (method groebner lists them)";
-  if (k + 1 < n) {
-    throw NoSingleEquation("no single implicit equation: " + std::to_string(k) + " parameter" + (k == 1 ? "" : "s") +
-                               " cannot give a " + kind + " (the image is a curve or a point)" + not_generated,
-                           {});
-  }
-  // A point where ω ≢ 0: a few tries per prime, and another prime when ω's scaled
-  // coefficients are all divisible by this one (an input can have it as a factor).
-  PrimeSequence primes(/*skip=*/11);
-  ResidueStream stream(seed ^ 0x6a09e667f3bcc909ULL);
-  std::vector<mp_limb_t> a(k);
-  std::optional<std::size_t> rank;
-  for (int prime = 0; prime < 8 && !rank; ++prime) {
-    const mp_limb_t p = primes.next();
-    nmod_t mod;
-    nmod_init(&mod, p);
-    ModularMap map(m, mod, /*with_partials=*/true);
-    for (int attempt = 0; attempt < 8 && !rank; ++attempt) {
-      for (auto& v : a) v = stream.next(p);
-      rank = map.jacobian_rank(a);
-    }
-  }
-  if (!rank) throw std::logic_error("interpolation: the common denominator vanishes at 64 random points");
-  const std::string space = n == 3 ? "space" : "the plane";
-  if (*rank == n) {
-    throw NoSingleEquation(
-        "no implicit equation: the image is dense in " + space + " (its Jacobian has rank " + std::to_string(n) + ")",
-        {});
-  }
-  if (*rank + 1 == n || !jacobian_minors_vanish(m, n - 1, budget)) return;
-  throw NoSingleEquation("no single implicit equation: the image is not a " + kind +
-                             " (the Jacobian of the parametrization has rank below " + std::to_string(n - 1) +
-                             " everywhere)" + not_generated,
-                         {});
-}
-
-std::int64_t degree_bound_of(const MapForms& m) {
-  const std::size_t k = m.parameters;
-  const std::size_t n = m.coordinates;
-  if (k + 1 < n) return 0;
-  std::int64_t total = 0;
-  std::vector<std::int64_t> partial(k, 0);
-  for (const Polynomial& f : m.exact) {
-    total = std::max<std::int64_t>(total, f.total_degree());
-    for (std::size_t j = 0; j < k; ++j) partial[j] = std::max<std::int64_t>(partial[j], f.degree_in(j));
-  }
-  std::int64_t bound = 1;
-  for (std::size_t i = 0; i + 1 < n; ++i) bound *= total;
-  if (k == 2 && n == 3) bound = std::min(bound, 2 * partial[0] * partial[1]);
-  return bound;
-}
-
-// ---------------------------------------------------------------- reconstruction
-
-// The polynomial with `coefficients` on the columns of `basis`, in implicit_ring(n).
-Polynomial polynomial_of(const MonomialBasis& basis, const std::vector<Integer>& coefficients) {
-  const RingPtr ring = implicit_ring(basis.variables);
-  const std::size_t w = ring->monomial_size();
-  std::vector<Integer> terms;
-  std::vector<std::int32_t> monomials;
-  std::vector<std::int32_t> encoded(w);
-  for (std::size_t c = 0; c < basis.size(); ++c) {
-    if (coefficients[c] == 0) continue;
-    terms.push_back(coefficients[c]);
-    ring->encode(basis.at(c), encoded.data());
-    monomials.insert(monomials.end(), encoded.begin(), encoded.end());
-  }
-  return Polynomial::from_terms(ring, Rational(1), std::move(terms), std::move(monomials)).primitive_part();
-}
 
 // ---------------------------------------------------------------- the driver
 
@@ -721,14 +249,10 @@ class InterpolationDriver {
   }
 
   std::optional<Polynomial> verified(Polynomial candidate) {
-    if (options_.tamper_candidate) options_.tamper_candidate(candidate);
-    if (rejected_ && candidate == *rejected_) return std::nullopt;  // the same wrong answer again
     const Stopwatch verify_timer;
-    const bool vanishes = substitutes_to_zero(candidate, parametrization_, forms_.exact, options_.budget);
+    const bool vanishes = verifier_.vanishes(candidate);
     stats_.verify_ms += verify_timer.elapsed_ms();
     if (vanishes) return candidate;
-    ++stats_.rejected_candidates;
-    rejected_ = std::move(candidate);
     return std::nullopt;
   }
 
@@ -747,7 +271,7 @@ class InterpolationDriver {
   std::int32_t lift_degree_ = 0;
   std::optional<CrtLift> lift_;
   std::optional<std::size_t> lead_;
-  std::optional<Polynomial> rejected_;
+  CandidateVerifier verifier_{parametrization_, forms_, options_, stats_};
 };
 
 }  // namespace
@@ -775,6 +299,27 @@ std::optional<InterpolationResult> implicitize_by_interpolation_up_to(const Para
   return InterpolationDriver(parametrization, options).run(max_degree);
 }
 
+namespace {
+
+// A hypersurface: the Jacobian has rank n − 1 at a point modulo the first prime of
+// options.primes (a minor non-zero modulo p is non-zero).
+bool has_hypersurface_rank(const MapForms& forms, const InterpolationParams& options) {
+  PrimeSequence primes = options.primes;
+  const mp_limb_t p = primes.next();
+  nmod_t mod;
+  nmod_init(&mod, p);
+  ModularMap map(forms, mod, /*with_partials=*/true);
+  ResidueStream stream(options.seed ^ 0x3c6ef372fe94f82bULL);
+  std::vector<mp_limb_t> a(forms.parameters);
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    for (auto& v : a) v = stream.next(p);
+    if (const auto rank = map.jacobian_rank(a)) return *rank + 1 == forms.coordinates;
+  }
+  return false;
+}
+
+}  // namespace
+
 ImplicitEquationCheck check_implicit_equation(const Polynomial& candidate, const Parametrization& parametrization,
                                               const InterpolationParams& options) {
   ImplicitEquationCheck check;
@@ -787,44 +332,27 @@ ImplicitEquationCheck check_implicit_equation(const Polynomial& candidate, const
   if (candidate.is_constant() || forms.parameters + 1 < n) return check;
 
   const std::int32_t d = candidate.total_degree();
-  const MonomialBasis basis = monomial_basis(n, d);
-  if (static_cast<double>(basis.size()) > static_cast<double>(options.max_columns)) {
-    throw LimitExceeded(Limit::size, "check_implicit_equation: the matrix would exceed " +
-                                         std::to_string(options.max_columns) + " columns");
+  if (monomial_count(n, d) > static_cast<double>(options.max_columns)) {
+    // The dense matrix is too large: the classes of the predicted support, whose size
+    // follows the equation's sparsity, decide instead (sparse_interpolation.hpp).
+    const std::optional<ImplicitSupport> support = predict_implicit_support(parametrization);
+    if (!support || support->largest_class > options.max_columns) {
+      throw LimitExceeded(Limit::size, "check_implicit_equation: the matrix would exceed " +
+                                           std::to_string(options.max_columns) +
+                                           " columns, and so would the largest class of the predicted support");
+    }
+    check.minimal =
+        is_minimal_on_support(candidate, parametrization, *support, options) && has_hypersurface_rank(forms, options);
+    return check;
   }
+  const MonomialBasis basis = monomial_basis(n, d);
   PrimeSequence primes = options.primes;
-  const mp_limb_t p = primes.next();
-  nmod_t mod;
-  nmod_init(&mod, p);
-  const KernelImage image = kernel_modulo(forms, basis, p, options.seed, options.budget);
+  const KernelImage image = kernel_modulo(forms, basis, primes.next(), options.seed, options.budget);
   if (!image.enough_points || image.nullity != 1) return check;
 
-  // The candidate modulo p on the columns, scaled like the kernel vector.
-  const Polynomial f = candidate.primitive_part();
-  std::map<std::vector<std::int32_t>, std::size_t> column_of;
-  for (std::size_t c = 0; c < basis.size(); ++c) {
-    column_of.emplace(std::vector<std::int32_t>(basis.at(c), basis.at(c) + n), c);
-  }
-  std::vector<mp_limb_t> residues(basis.size(), 0);
-  for (std::size_t t = 0; t < f.num_terms(); ++t) {
-    residues[column_of.at(f.exponents(t))] = mpz_fdiv_ui(to_integer(f.coefficient(t)).get_mpz_t(), p);
-  }
-  if (residues[image.lead] == 0) return check;
-  const mp_limb_t inverse = n_invmod(residues[image.lead], p);
-  _nmod_vec_scalar_mul_nmod(residues.data(), residues.data(), static_cast<slong>(residues.size()), inverse, mod);
-  if (residues != image.vector) return check;
+  if (!spans_kernel(candidate.primitive_part(), basis, image)) return check;
 
-  // A hypersurface: the Jacobian has rank n − 1 at a point modulo the same prime.
-  ModularMap map(forms, mod, /*with_partials=*/true);
-  ResidueStream stream(options.seed ^ 0x3c6ef372fe94f82bULL);
-  std::vector<mp_limb_t> a(forms.parameters);
-  for (int attempt = 0; attempt < 16; ++attempt) {
-    for (auto& v : a) v = stream.next(p);
-    if (const auto rank = map.jacobian_rank(a)) {
-      check.minimal = *rank + 1 == n;
-      break;
-    }
-  }
+  check.minimal = has_hypersurface_rank(forms, options);
   return check;
 }
 

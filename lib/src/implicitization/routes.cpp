@@ -7,6 +7,7 @@
 #include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/core/try_within.hpp"
 #include "implicitizer/groebner/elimination.hpp"
+#include "implicitizer/implicitization/sparse_interpolation.hpp"
 #include "implicitizer/implicitization/verify.hpp"
 #include "implicitizer/polynomial/gcd.hpp"
 #include "implicitizer/polynomial/printer.hpp"
@@ -139,22 +140,48 @@ std::optional<ImplicitizeResult> modular_groebner_route(const Parametrization& p
   return result;
 }
 
-std::optional<ImplicitizeResult> interpolation_route_up_to(const Parametrization& p, std::int32_t max_degree,
-                                                           const Budget& budget) {
-  InterpolationParams interpolation;
-  interpolation.budget = budget;
-  std::optional<InterpolationResult> answer = implicitize_by_interpolation_up_to(p, max_degree, interpolation);
+namespace {
+
+// An interpolation route's answer, which the route verified (it returns nothing else).
+std::optional<ImplicitizeResult> from_interpolation(std::optional<InterpolationResult> answer) {
   if (!answer) return std::nullopt;
   ImplicitizeResult result;
   result.implicit = std::move(answer->implicit);
   result.method = "interpolation";
-  result.verified = true;  // by substitution inside the route, which returns nothing else
+  result.verified = true;
   result.verify_ms = answer->stats.verify_ms;
   result.interpolation_stats = answer->stats;
   return result;
 }
 
+}  // namespace
+
+std::optional<ImplicitizeResult> interpolation_route_up_to(const Parametrization& p, std::int32_t max_degree,
+                                                           const Budget& budget) {
+  InterpolationParams interpolation;
+  interpolation.budget = budget;
+  return from_interpolation(implicitize_by_interpolation_up_to(p, max_degree, interpolation));
+}
+
+std::optional<ImplicitizeResult> sparse_interpolation_route(const Parametrization& p, const ImplicitSupport& support,
+                                                            const Budget& budget) {
+  InterpolationParams interpolation;
+  interpolation.budget = budget;
+  return from_interpolation(implicitize_by_sparse_interpolation(p, support, interpolation));
+}
+
 ImplicitizeResult interpolation_route(const Parametrization& p, const Budget& budget) {
+  // Where the dense matrix at the degree bound would pass its column limit (the dense
+  // route may still find a lower degree below it, or refuse), a predicted support
+  // that fits is tried first: sparse_s7t7 (degree 49) answers in 0.3 s instead of a
+  // refusal.
+  const std::size_t max_columns = InterpolationParams{}.max_columns;
+  if (p.coordinates.size() == 3 && space_monomial_count(implicit_degree_bound(p)) > static_cast<double>(max_columns)) {
+    const std::optional<ImplicitSupport> support = predict_implicit_support(p);
+    if (support && support->largest_class <= max_columns && support->cubed_columns <= kSparseMaxCubedColumns) {
+      if (auto sparse = sparse_interpolation_route(p, *support, budget)) return std::move(*sparse);
+    }
+  }
   // Never nullopt: no degree is above the largest there is.
   return *interpolation_route_up_to(p, kMaxTotalDegree, budget);
 }

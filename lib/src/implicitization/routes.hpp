@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "implicitizer/implicitization/implicit_support.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 
 namespace implicitizer {
@@ -39,7 +40,14 @@ std::optional<ImplicitizeResult> modular_groebner_route(const Parametrization& p
 std::optional<ImplicitizeResult> interpolation_route_up_to(const Parametrization& parametrization,
                                                            std::int32_t max_degree, const Budget& budget);
 
-/// The whole interpolation route.
+/// The interpolation route on a predicted support (sparse_interpolation.hpp): nullopt
+/// when the prediction does not give the equation. Verified and proven by the route.
+std::optional<ImplicitizeResult> sparse_interpolation_route(const Parametrization& parametrization,
+                                                            const ImplicitSupport& support, const Budget& budget);
+
+/// The whole interpolation route; where the dense matrix at the degree bound would
+/// pass its column limit, first the predicted support (when its classes fit and cost
+/// at most kSparseMaxCubedColumns), then the dense route if that falls back.
 ImplicitizeResult interpolation_route(const Parametrization& parametrization, const Budget& budget);
 
 /// The resultant route (Theorem 1.13: the square-free part of the auxiliary resultant,

@@ -166,7 +166,11 @@ struct ImplicitEquationCheck {
 };
 
 /// Checks `candidate` (in implicit_ring(n)) against `parametrization`, with the
-/// points, budget and primes of `options` (the next prime of the sequence).
+/// points, budget and primes of `options` (the next prime of the sequence). Where the
+/// monomials of degree ≤ deg F would exceed options.max_columns, a surface in two
+/// parameters is checked on the classes of its predicted support instead
+/// (is_minimal_on_support(), sparse_interpolation.hpp), whose size follows the
+/// equation's sparsity; LimitExceeded (size) when those too exceed it.
 ImplicitEquationCheck check_implicit_equation(const Polynomial& candidate, const Parametrization& parametrization,
                                               const InterpolationParams& options = {});
 
