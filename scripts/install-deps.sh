@@ -2,7 +2,8 @@
 # Installs what implicitizer needs on Debian (bookworm): the compiler and CMake, the
 # number libraries (GMP, MPFR, FLINT, CGAL), Boost (Beast is header-only inside
 # libboost-dev), RapidJSON, libpng (the preview renderer's PNG), GoogleTest, the
-# oracles the tests compare against (Singular, Macaulay2), glslang for checking
+# oracles the tests compare against (Singular, Macaulay2), Giac's library for the
+# peer drivers the benchmarks build (bench/groebner_peers.py), glslang for checking
 # generated GLSL, EGL/OpenGL ES and Mesa's drivers for running it on llvmpipe
 # (tests/sdf/glsl_execution_test.cpp), Python 3 and clang (libFuzzer, clang-format),
 # and for the web client's browser tests (tests/web) Chromium, Node.js and npm, then
@@ -23,6 +24,7 @@ packages=(
   libpng-dev
   googletest libgtest-dev libgmock-dev
   singular macaulay2
+  libgiac-dev
   glslang-tools
   libegl-dev libgles-dev libgl1-mesa-dri
   python3 python3-yaml
