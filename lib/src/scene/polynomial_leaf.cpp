@@ -448,14 +448,26 @@ T evaluate_leaf(const SceneEvaluator<T>& e, const CompiledNode& n, const Vec3<T>
 
 // Piece k of a leaf: its distance, then its cover. A leaf of one surface keeps the
 // names leaf<n> and leaf<n>_cover; an approximation's pieces are leaf<n>_piece<k>.
-std::string emit_piece(SceneGlslWriter& w, const PolynomialLeaf& leaf, const std::string& id, std::size_t k,
-                       const CompiledNode& n, const std::string& p) {
+// Piece k's untrimmed distance, stated as a value; returns its name.
+std::string emit_piece_distance(SceneGlslWriter& w, const PolynomialLeaf& leaf, const std::string& id, std::size_t k,
+                                const CompiledNode& n, const std::string& p) {
   w.require_helper(id, leaf.to_glsl(w.prefix() + "_" + id, k));
-  const std::string d = w.value(w.call(id, p), SceneGlslWriter::type(n));
-  if (!leaf.trimmed()) return d;
+  return w.value(w.call(id, p), SceneGlslWriter::type(n));
+}
+
+// The call of piece k's cover on its distance `d`.
+std::string cover_call(SceneGlslWriter& w, const PolynomialLeaf& leaf, const std::string& id, std::size_t k,
+                       const std::string& p, const std::string& d) {
   const std::string cover = id + "_cover";
   w.require_helper(cover, leaf.cover(k)->to_glsl(w.prefix() + "_" + cover), PatchCover::glsl_suffixes());
-  return w.value(w.call(cover, p + ", " + d), "trimmed to the patch's cover");
+  return w.call(cover, p + ", " + d);
+}
+
+std::string emit_piece(SceneGlslWriter& w, const PolynomialLeaf& leaf, const std::string& id, std::size_t k,
+                       const CompiledNode& n, const std::string& p) {
+  const std::string d = emit_piece_distance(w, leaf, id, k, n, p);
+  if (!leaf.trimmed()) return d;
+  return w.value(cover_call(w, leaf, id, k, p, d), "trimmed to the patch's cover");
 }
 
 std::string emit_leaf(SceneGlslWriter& w, const CompiledNode& n, const std::string& p) {
@@ -470,12 +482,9 @@ std::string emit_leaf(SceneGlslWriter& w, const CompiledNode& n, const std::stri
   for (std::size_t k = 1; k < leaf.piece_count(); ++k) {
     const std::string piece = id + "_piece" + std::to_string(k);
     w.statement("  if (" + leaf.cover(k)->hull_glsl(p) + " < " + value + ") {\n");
-    w.require_helper(piece, leaf.to_glsl(w.prefix() + "_" + piece, k));
-    const std::string d = w.value(w.call(piece, p), SceneGlslWriter::type(n));
-    const std::string cover = piece + "_cover";
-    w.require_helper(cover, leaf.cover(k)->to_glsl(w.prefix() + "_" + cover), PatchCover::glsl_suffixes());
+    const std::string d = emit_piece_distance(w, leaf, piece, k, n, p);
     w.statement("  if (abs(" + d + ") < " + value + ") " + value + " = min(" + value + ", " +
-                w.call(cover, p + ", " + d) + ");\n  }\n");
+                cover_call(w, leaf, piece, k, p, d) + ");\n  }\n");
   }
   return value;
 }

@@ -235,30 +235,11 @@ struct Slot {
   int component = 0;
 };
 
-Slot slot_of(R r) {
-  switch (r) {
-    case R::a:
-      return {0, 0};
-    case R::aw:
-      return {0, 1};
-    case R::b:
-      return {1, 0};
-    case R::bv:
-      return {1, 1};
-    case R::bw:
-      return {1, 2};
-    case R::g:
-      return {2, 0};
-    case R::gu:
-      return {2, 1};
-    case R::gv:
-      return {2, 2};
-    case R::gw:
-      return {2, 3};
-    default:
-      return {};
-  }
-}
+// By register, in ProgramRegister's order (u, v, w, a, aw, b, bv, bw, g, gu, gv, gw).
+constexpr Slot kSlots[kProgramRegisters] = {{-1, 0}, {-1, 0}, {-1, 0}, {0, 0}, {0, 1}, {1, 0},
+                                            {1, 1},  {1, 2},  {2, 0},  {2, 1}, {2, 2}, {2, 3}};
+
+Slot slot_of(R r) { return kSlots[static_cast<std::size_t>(r)]; }
 
 constexpr const char* kVectorNames[3] = {"A", "B", "G"};
 constexpr int kVectorSizes[3] = {2, 3, 4};
