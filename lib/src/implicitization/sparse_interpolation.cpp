@@ -113,13 +113,7 @@ class SparseLift {
  public:
   SparseLift(const Parametrization& p, const MapForms& forms, const MonomialBasis& basis,
              const InterpolationParams& options, InterpolationStats& stats)
-      : parametrization_(p),
-        forms_(forms),
-        basis_(basis),
-        options_(options),
-        stats_(stats),
-        lift_(basis.size(), kLiftParams),
-        verifier_(p, forms, options, stats) {}
+      : basis_(basis), stats_(stats), lift_(basis.size(), kLiftParams), verifier_(p, forms, options, stats) {}
 
   // Takes one kernel of the chosen class; returns the proven equation when this one
   // completes it.
@@ -163,10 +157,7 @@ class SparseLift {
     return std::nullopt;
   }
 
-  const Parametrization& parametrization_;
-  const MapForms& forms_;
   const MonomialBasis& basis_;
-  const InterpolationParams& options_;
   InterpolationStats& stats_;
   CrtLift lift_;
   std::optional<std::size_t> lead_;
