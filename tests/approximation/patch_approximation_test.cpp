@@ -15,6 +15,7 @@
 #include <optional>
 #include <random>
 
+#include "approximation/polytope_support.hpp"
 #include "implicitization/surfaces.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/core/rational.hpp"
@@ -145,8 +146,18 @@ std::size_t piece_at(const PatchApproximation& a, double s, double t) {
   return 0;
 }
 
+using testing::polytope_excess;
+
+bool in_box(const ApproximationPiece& piece, const Point& y) {
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (y[i] < to_mpq(piece.box.lo[i]).get_d() || y[i] > to_mpq(piece.box.hi[i]).get_d()) return false;
+  }
+  return true;
+}
+
 // Patch → surface on a 200×200 grid of D: along ∇q from X(s, t), q changes sign within
-// the piece's certified bound (a 1-D root search on 65 points of [−B, B]).
+// the piece's certified bound (a 1-D root search on 65 points of [−B, B]); and each
+// point lies in its piece's polytope (where it has one: the trimming must keep it).
 double check_patch_to_surface(const Parametrization& parametrization, const PatchApproximation& a) {
   const Patch patch(parametrization);
   std::vector<Surface> surfaces;
@@ -161,6 +172,9 @@ double check_patch_to_surface(const Parametrization& parametrization, const Patc
       const ApproximationPiece& piece = a.pieces[k];
       const Surface& q = surfaces[k];
       const Point p = patch(s, t), g = q.gradient(p);
+      if (piece.polytope) {
+        EXPECT_LE(polytope_excess(*piece.polytope, p), 1e-9L * a.diagonal) << "X(" << s << ", " << t << ")";
+      }
       const Point n{g[0] / norm(g), g[1] / norm(g), g[2] / norm(g)};
       const double bound = piece.patch_to_surface * (1 + 1e-6) + 1e-12 * a.diagonal;
       std::optional<double> root;
@@ -226,8 +240,10 @@ double distance_to_patch(const Patch& patch, const std::array<double, 4>& near, 
 
 // Surface → patch: points of {q = 0} found from 24×24 patch points per piece moved at
 // random by up to 0.1·h (h the piece box's largest half side), projected by Newton along
-// ∇q; each within EPS·diagonal of X(D') (D' = D widened by a quarter of its sides;
-// the nearest patch point searched near S' = S widened likewise, and over D').
+// ∇q; each that the trimming keeps (in the piece's polytope and box where it has one,
+// else within 0.1·h of X(S)) within EPS·diagonal of X(D') (D' = D widened by a quarter
+// of its sides; the nearest patch point searched near S' = S widened likewise, and
+// over D').
 double check_surface_to_patch(const Parametrization& parametrization, const PatchApproximation& a) {
   const Patch patch(parametrization);
   std::mt19937 random(2026);
@@ -255,12 +271,17 @@ double check_surface_to_patch(const Parametrization& parametrization, const Patc
           converged = std::abs(step) * norm(g) < 1e-10 * q.half;
         }
         const Point moved{y[0] - p[0], y[1] - p[1], y[2] - p[2]};
-        // The part the trimming keeps: within 0.1·h of X(S).
-        if (!converged || norm(moved) > 0.1 * h || distance_to_patch(patch, r, r, y) > 0.1 * h) continue;
+        if (!converged || norm(moved) > 0.1 * h) continue;
+        // The part the trimming keeps.
+        if (piece.polytope ? polytope_excess(*piece.polytope, y) > 0 || !in_box(piece, y)
+                           : distance_to_patch(patch, r, r, y) > 0.1 * h) {
+          continue;
+        }
         const double dist = distance_to_patch(patch, widened, whole, y);
         EXPECT_LE(dist, a.tolerance * a.diagonal)
             << "piece [" << r[0] << ", " << r[1] << "]x[" << r[2] << ", " << r[3] << "] degree " << piece.degree
-            << ", point (" << y[0] << ", " << y[1] << ", " << y[2] << ")";
+            << (piece.polytope ? ", trimmed to its polytope" : ", trimmed to a cover") << ", point (" << y[0] << ", "
+            << y[1] << ", " << y[2] << ")";
         worst = std::max(worst, dist);
       }
     }

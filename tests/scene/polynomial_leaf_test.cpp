@@ -10,6 +10,7 @@
 #include <iostream>
 #include <optional>
 
+#include "approximation/polytope_support.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "scene/scene_support.hpp"
 
@@ -352,13 +353,8 @@ SceneNode tp33(std::optional<double> tolerance) {
 std::size_t count_lines(const std::string& text) { return std::size_t(std::count(text.begin(), text.end(), '\n')); }
 
 V tp33_point(double s, double t) {
-  const double s2 = s * s, s3 = s2 * s, t2 = t * t, t3 = t2 * t;
-  return {3 + 2 * t2 + t3 - 3 * s - 5 * s * t + s2 - 2 * s2 * t - 3 * s2 * t2 - 3 * s2 * t3 + 4 * s3 - 3 * s3 * t +
-              3 * s3 * t2 - s3 * t3,
-          3 + t - 2 * t2 - 4 * t3 - 3 * s + s * t + 5 * s * t2 + 2 * s * t3 + 4 * s2 - s2 * t - 5 * s2 * t2 + s2 * t3 -
-              5 * s3 - 3 * s3 * t - 5 * s3 * t2 + 3 * s3 * t3,
-          -2 - 2 * t - 4 * t2 - 5 * t3 + 3 * s - 3 * s * t - 4 * s * t2 - 4 * s * t3 - s2 + 3 * s2 * t - 3 * s2 * t2 -
-              2 * s2 * t3 + 3 * s3 + 5 * s3 * t - 2 * s3 * t2 + 2 * s3 * t3};
+  const std::array<double, 3> x = testing::tp33_point(s, t);
+  return {x[0], x[1], x[2]};
 }
 
 TEST(PolynomialLeaf, ApproximatedPatchIsWithinItsBoundOnThePatch) {
@@ -396,8 +392,13 @@ TEST(PolynomialLeaf, ApproximatedPatchGlslRunsOnLlvmpipe) {
   const PolynomialLeaf& leaf = scene.leaves().front();
   ASSERT_NE(leaf.approximation(), nullptr);
   EXPECT_EQ(testing::glslang_both(scene), "");
-  // One distance and one cover per piece, and their min.
+  // One distance and one trimming per piece, and their min; tp_33's pieces are nearly
+  // flat, so some are trimmed to their polytope (six planes) rather than a box cover.
   const std::string glsl = scene.to_glsl();
+  std::size_t polytopes = 0;
+  for (std::size_t k = 0; k < leaf.piece_count(); ++k) polytopes += leaf.polytope(k) != nullptr ? 1 : 0;
+  EXPECT_GT(polytopes, 0u);
+  EXPECT_NE(glsl.find("a polytope of "), std::string::npos);
   if (leaf.piece_count() > 1) {
     const std::string last = "s_leaf0_piece" + std::to_string(leaf.piece_count() - 1) + "_cover(";
     EXPECT_NE(glsl.find(last), std::string::npos);
@@ -418,8 +419,8 @@ TEST(PolynomialLeaf, ApproximatedPatchGlslRunsOnLlvmpipe) {
   ASSERT_EQ(r.error, "");
   for (float v : r.gpu) EXPECT_GE(v, 0.0f);
   EXPECT_LE(r.worst_scaled, 64);
-  std::cout << "tp_33 at 1e-2: " << leaf.piece_count() << " pieces, " << r.points << " points, " << r.identical
-            << " bit-identical, worst " << r.worst_scaled << " x 2^-24 x scale\n";
+  std::cout << "tp_33 at 1e-2: " << leaf.piece_count() << " pieces (" << polytopes << " polytopes), " << r.points
+            << " points, " << r.identical << " bit-identical, worst " << r.worst_scaled << " x 2^-24 x scale\n";
 }
 
 // A tolerance the exact equation answers more cheaply: tp_22's degree-8 equation is

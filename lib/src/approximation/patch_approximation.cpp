@@ -129,9 +129,52 @@ PatchSamples patch_samples(const PatchEvaluator& patch, const ParameterRect& rec
   return samples;
 }
 
+// What a piece is measured and trimmed against: its polytope (when one exists) and
+// its box, the corners rounded outwards to float as the scene states them.
+struct PieceTrimRegion {
+  std::optional<TrimPolytope> polytope;
+  Point lo{}, hi{};
+};
+
+PieceTrimRegion trim_region(const Context& ctx, const ParameterDomain& domain, const PatchBounds& box) {
+  PieceTrimRegion region{bound_piece_polytope(ctx.parametrization, domain, ctx.budget), {}, {}};
+  for (std::size_t i = 0; i < 3; ++i) {
+    region.lo[i] = round_down<float>(box.lo[i]);
+    region.hi[i] = round_up<float>(box.hi[i]);
+  }
+  return region;
+}
+
+// The surface → patch distance of q's zeros that the trimming keeps: those in the
+// polytope when they all lie within the margin and within the tube of reach 0.1·h
+// around X(S) (a curved piece's polytope can hold far more of q's continuation past
+// S's edges than the tube: measured on Enneper's surface, the drawn patch then
+// differed from the exact one's by a quarter of its pixels), else (kept: none) those
+// in the tube, which a box cover keeps.
+SurfaceToPatch measure_kept_zeros(const Context& ctx, const FramedPolynomial& q, const ParameterRect& rect,
+                                  const Frame& frame, const PieceTrimRegion& region, bool& polytope_kept) {
+  polytope_kept = false;
+  const double reach = 0.1 * frame.half;
+  SurfaceToPatch in_polytope;
+  if (region.polytope) {
+    in_polytope = measure_polytope_to_patch(ctx.patch, q, *region.polytope, region.lo, region.hi, rect, ctx.domain,
+                                            reach, ctx.budget);
+    polytope_kept = in_polytope.samples > 0 && in_polytope.distance <= kMeasuredMargin * ctx.target &&
+                    in_polytope.beyond_piece <= reach;
+    if (polytope_kept) return in_polytope;
+  }
+  SurfaceToPatch in_tube = measure_surface_to_patch(ctx.patch, q, rect, ctx.domain, reach, ctx.budget);
+  // Reported when neither is kept: the nearer miss.
+  if (!(in_tube.distance <= kMeasuredMargin * ctx.target) && in_polytope.samples > 0 &&
+      in_polytope.distance < in_tube.distance) {
+    return in_polytope;
+  }
+  return in_tube;
+}
+
 // Tries one degree on the piece: the accepted piece, or the distance it reached.
 PieceResult try_degree(const Context& ctx, const ParameterDomain& domain, const PatchBounds& box, const Frame& frame,
-                       const DokkenChoice& choice, int degree) {
+                       const DokkenChoice& choice, const PieceTrimRegion& region, int degree) {
   const ParameterRect rect = rect_of(domain);
   DokkenEquation dokken = dokken_equation(ctx.forms, box_of(domain), frame, degree, choice, ctx.space, ctx.budget);
   const FramedPolynomial q(dokken.equation, frame);
@@ -139,8 +182,8 @@ PieceResult try_degree(const Context& ctx, const ParameterDomain& domain, const 
   const double estimate = estimate_patch_to_surface(ctx.patch, q, rect, kScreenSide);
   result.best = estimate;
   if (!(estimate <= ctx.target)) return result;
-  const SurfaceToPatch measured =
-      measure_surface_to_patch(ctx.patch, q, rect, ctx.domain, 0.1 * frame.half, ctx.budget);
+  bool polytope_kept = false;
+  const SurfaceToPatch measured = measure_kept_zeros(ctx, q, rect, frame, region, polytope_kept);
   result.best = std::max(estimate, measured.distance);
   if (measured.samples == 0 || !(measured.distance <= kMeasuredMargin * ctx.target)) return result;
   const Certificate certificate =
@@ -156,7 +199,8 @@ PieceResult try_degree(const Context& ctx, const ParameterDomain& domain, const 
                                     BoundMethod::certified,
                                     measured.distance,
                                     BoundMethod::measured,
-                                    measured.samples};
+                                    measured.samples,
+                                    polytope_kept ? region.polytope : std::nullopt};
   return result;
 }
 
@@ -166,10 +210,11 @@ PieceResult approximate_piece(const Context& ctx, const ParameterDomain& domain)
   const Frame frame = frame_of(box);
   // Near null: an algebraic error bound below a tenth of the tolerance in frame units.
   const DokkenChoice choice{0.1 * ctx.target / frame.half, patch_samples(ctx.patch, rect_of(domain), frame)};
+  const PieceTrimRegion region = trim_region(ctx, domain, box);
   PieceResult best;
   for (int degree = 1; degree <= ctx.params.max_degree; ++degree) {
     ctx.budget.check(kWhere);
-    PieceResult r = try_degree(ctx, domain, box, frame, choice, degree);
+    PieceResult r = try_degree(ctx, domain, box, frame, choice, region, degree);
     if (r.piece) return r;
     best.best = std::min(best.best, r.best);
   }

@@ -116,6 +116,27 @@ void projected_zeros(const FramedPolynomial& q, const Point& x, double reach, st
   }
 }
 
+// The zeros of q near X(S): on the normal segments of reach `reach` and by Newton
+// from random points within `reach`, from a 25×25 grid of S widened by an eighth of
+// its sides (for the caps of the tube beyond S's edges).
+void collect_tube_zeros(const PatchEvaluator& patch, const FramedPolynomial& q, const ParameterRect& piece,
+                        double reach, const Budget& budget, std::vector<Point>& zeros) {
+  std::mt19937_64 random(19);
+  const double es = (piece[1] - piece[0]) / 8, et = (piece[3] - piece[2]) / 8;
+  const ParameterRect scan{piece[0] - es, piece[1] + es, piece[2] - et, piece[3] + et};
+  for (std::size_t i = 0; i < kSampleSide; ++i) {
+    budget.check(kWhere);
+    for (std::size_t j = 0; j < kSampleSide; ++j) {
+      const double s = scan[0] + (scan[1] - scan[0]) * double(i) / double(kSampleSide - 1);
+      const double t = scan[2] + (scan[3] - scan[2]) * double(j) / double(kSampleSide - 1);
+      Point x, xs, xt;
+      if (!patch.point_and_derivatives(s, t, x, xs, xt)) continue;
+      normal_line_zeros(q, x, xs, xt, reach, zeros);
+      projected_zeros(q, x, reach, random, zeros);
+    }
+  }
+}
+
 }  // namespace
 
 ParameterRect widened(const ParameterRect& r) {
@@ -133,30 +154,84 @@ SurfaceToPatch measure_surface_to_patch(const PatchEvaluator& patch, const Frame
   add_seed_grid(patch, whole, far);
   SurfaceToPatch result;
   if (near.points.empty() || far.points.empty()) return result;
-  std::mt19937_64 random(19);
+  // The zeros farther than `reach` from X(S) are dropped below (the trimming removes
+  // them).
   std::vector<Point> zeros;
-  // The normal segments start on S widened by an eighth of its sides, for the caps of
-  // the tube beyond S's edges; the zeros farther than `reach` from X(S) are dropped
-  // below (the trimming removes them).
-  const double es = (piece[1] - piece[0]) / 8, et = (piece[3] - piece[2]) / 8;
-  const ParameterRect scan{piece[0] - es, piece[1] + es, piece[2] - et, piece[3] + et};
-  for (std::size_t i = 0; i < kSampleSide; ++i) {
-    budget.check(kWhere);
-    for (std::size_t j = 0; j < kSampleSide; ++j) {
-      const double s = scan[0] + (scan[1] - scan[0]) * double(i) / double(kSampleSide - 1);
-      const double t = scan[2] + (scan[3] - scan[2]) * double(j) / double(kSampleSide - 1);
-      Point x, xs, xt;
-      if (!patch.point_and_derivatives(s, t, x, xs, xt)) continue;
-      normal_line_zeros(q, x, xs, xt, reach, zeros);
-      projected_zeros(q, x, reach, random, zeros);
-    }
-  }
+  collect_tube_zeros(patch, q, piece, reach, budget, zeros);
   Seeds own;
   add_seed_grid(patch, piece, own);
   for (const Point& y : zeros) {
     if (distance_to_patch(patch, own, piece, y) > reach) continue;
     // Two starts: a folded patch brings another part of X(D') close, where a single
     // projection can stop in a local minimum.
+    const double d = std::min(distance_to_patch(patch, near, whole, y), distance_to_patch(patch, far, whole, y));
+    result.distance = std::max(result.distance, d);
+    ++result.samples;
+  }
+  return result;
+}
+
+namespace {
+
+// Zeros of q on the segment from `a` along axis `axis` over [from, to]: every sign
+// change between kLineSamples equally spaced points, bisected.
+void axis_line_zeros(const FramedPolynomial& q, Point a, std::size_t axis, double from, double to,
+                     std::vector<Point>& zeros) {
+  constexpr int kLineSamples = 48;
+  const auto at = [&](double c) {
+    a[axis] = c;
+    return a;
+  };
+  double previous_c = from, previous = q.value(at(from));
+  for (int k = 1; k < kLineSamples; ++k) {
+    const double c = from + (to - from) * k / (kLineSamples - 1), value = q.value(at(c));
+    if ((value > 0) != (previous > 0)) {
+      double lo = previous_c, hi = c;
+      for (int halving = 0; halving < 60; ++halving) {
+        const double middle = (lo + hi) / 2;
+        ((q.value(at(middle)) > 0) == (previous > 0) ? lo : hi) = middle;
+      }
+      zeros.push_back(at((lo + hi) / 2));
+    }
+    previous_c = c, previous = value;
+  }
+}
+
+}  // namespace
+
+SurfaceToPatch measure_polytope_to_patch(const PatchEvaluator& patch, const FramedPolynomial& q,
+                                         const TrimPolytope& polytope, const Point& lo, const Point& hi,
+                                         const ParameterRect& piece, const ParameterRect& domain, double reach,
+                                         const Budget& budget) {
+  constexpr std::size_t kGrid = 48;
+  const ParameterRect whole = widened(domain);
+  Seeds near, far;
+  add_seed_grid(patch, widened(piece), near);
+  add_seed_grid(patch, whole, far);
+  Seeds own;
+  add_seed_grid(patch, piece, own);
+  SurfaceToPatch result;
+  if (near.points.empty() || far.points.empty() || own.points.empty()) return result;
+  // Near the patch as the tube's measurement samples, then across the whole box.
+  std::vector<Point> zeros;
+  collect_tube_zeros(patch, q, piece, reach, budget, zeros);
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    const std::size_t a = (axis + 1) % 3, b = (axis + 2) % 3;
+    for (std::size_t i = 0; i < kGrid; ++i) {
+      budget.check(kWhere);
+      for (std::size_t j = 0; j < kGrid; ++j) {
+        Point start{};
+        start[a] = lo[a] + (hi[a] - lo[a]) * (double(i) + 0.5) / double(kGrid);
+        start[b] = lo[b] + (hi[b] - lo[b]) * (double(j) + 0.5) / double(kGrid);
+        axis_line_zeros(q, start, axis, lo[axis], hi[axis], zeros);
+      }
+    }
+  }
+  for (const Point& y : zeros) {
+    const bool in_box =
+        y[0] >= lo[0] && y[0] <= hi[0] && y[1] >= lo[1] && y[1] <= hi[1] && y[2] >= lo[2] && y[2] <= hi[2];
+    if (!in_box || polytope.excess(y) > 0) continue;
+    result.beyond_piece = std::max(result.beyond_piece, distance_to_patch(patch, own, piece, y));
     const double d = std::min(distance_to_patch(patch, near, whole, y), distance_to_patch(patch, far, whole, y));
     result.distance = std::max(result.distance, d);
     ++result.samples;

@@ -28,6 +28,7 @@
 #include <array>
 #include <cstddef>
 
+#include "implicitizer/approximation/trim_polytope.hpp"
 #include "implicitizer/core/budget.hpp"
 #include "patch_evaluator.hpp"
 
@@ -40,6 +41,9 @@ using ParameterRect = std::array<double, 4>;
 struct SurfaceToPatch {
   double distance = 0;      ///< the largest distance found (0 when no point converged)
   std::size_t samples = 0;  ///< points of {q = 0} measured
+  /// The largest distance of a measured point to X(S) itself (a polytope's only: the
+  /// tube drops the points beyond its reach).
+  double beyond_piece = 0;
 };
 
 /// R widened by a quarter of its sides on every side.
@@ -49,6 +53,19 @@ ParameterRect widened(const ParameterRect& r);
 SurfaceToPatch measure_surface_to_patch(const PatchEvaluator& patch, const FramedPolynomial& q,
                                         const ParameterRect& piece, const ParameterRect& domain, double reach,
                                         const Budget& budget);
+
+/// The same measurement for a piece trimmed to `polytope` ∩ the box [lo, hi]
+/// (trim_polytope.hpp) instead of the tube: the zeros of q that lie in both, found as
+/// above (normal segments and Newton projections of reach `reach`) and where q changes
+/// sign along lines parallel to x, y and z through a 48×48 grid of the box's
+/// cross-section (48 samples per line, then bisection; a sheet is crossed by the
+/// family most normal to it), measured against X(D') as above; and against X(S)
+/// (beyond_piece), which says whether the polytope keeps more of q's continuation
+/// past S's edges than the tube of `reach` would.
+SurfaceToPatch measure_polytope_to_patch(const PatchEvaluator& patch, const FramedPolynomial& q,
+                                         const TrimPolytope& polytope, const Point& lo, const Point& hi,
+                                         const ParameterRect& piece, const ParameterRect& domain, double reach,
+                                         const Budget& budget);
 
 /// max |q(X)|/|∇q(X)| over a side×side grid of the piece: the first-order distance of
 /// the patch to {q = 0}, an estimate (not a bound) used only to skip degrees.

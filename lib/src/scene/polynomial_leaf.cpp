@@ -315,7 +315,7 @@ std::size_t PolynomialLeaf::piece_glsl_lines(std::size_t k) const {
   // Beyond the first, a piece is also its culling test, its distance's call, its
   // cover's call with the min and the closing brace (emit_leaf).
   std::size_t lines = count_lines(to_glsl("f", k)) + (k > 0 ? 4 : 0);
-  if (pieces_[k].cover) lines += count_lines(pieces_[k].cover->to_glsl("c"));
+  if (trimmed()) lines += count_lines(trim_glsl("c", k));
   return lines;
 }
 
@@ -394,14 +394,37 @@ PolynomialLeaf::Piece PolynomialLeaf::build_piece(const ApproximationPiece& sour
   } catch (const InputError& e) {
     throw at_field(e, field, e.code() == "invalid_box" ? "box" : "");
   }
-  piece.cover = PatchCover::build(parametrization, source.domain, source.equation, box, budget);
+  // A polytope when the approximation measured its kept zeros there, else a cover.
+  if (source.polytope) {
+    piece.polytope.emplace(*source.polytope, source.box);
+  } else {
+    piece.cover = PatchCover::build(parametrization, source.domain, source.equation, box, budget);
+  }
   return piece;
 }
 
+std::string PolynomialLeaf::trim_glsl(const std::string& function, std::size_t k) const {
+  const Piece& piece = pieces_[k];
+  return piece.cover ? piece.cover->to_glsl(function) : piece.polytope->to_glsl(function);
+}
+
+std::vector<std::string> PolynomialLeaf::trim_glsl_suffixes(std::size_t k) const {
+  return pieces_[k].cover ? PatchCover::glsl_suffixes() : PolytopeTrim::glsl_suffixes();
+}
+
+std::string PolynomialLeaf::trim_hull_glsl(const std::string& p, std::size_t k) const {
+  const Piece& piece = pieces_[k];
+  return piece.cover ? piece.cover->hull_glsl(p) : piece.polytope->hull_glsl(p);
+}
+
 Vec3<float> PolynomialLeaf::trim_corner(bool upper) const {
-  Vec3<float> corner = upper ? pieces_.front().cover->hi() : pieces_.front().cover->lo();
+  const auto corner_of = [&](const Piece& piece) {
+    if (piece.cover) return upper ? piece.cover->hi() : piece.cover->lo();
+    return upper ? piece.polytope->hi() : piece.polytope->lo();
+  };
+  Vec3<float> corner = corner_of(pieces_.front());
   for (const Piece& piece : pieces_) {
-    const Vec3<float> c = upper ? piece.cover->hi() : piece.cover->lo();
+    const Vec3<float> c = corner_of(piece);
     corner = upper ? Vec3<float>{std::max(corner.x, c.x), std::max(corner.y, c.y), std::max(corner.z, c.z)}
                    : Vec3<float>{std::min(corner.x, c.x), std::min(corner.y, c.y), std::min(corner.z, c.z)};
   }
@@ -459,7 +482,7 @@ std::string emit_piece_distance(SceneGlslWriter& w, const PolynomialLeaf& leaf, 
 std::string cover_call(SceneGlslWriter& w, const PolynomialLeaf& leaf, const std::string& id, std::size_t k,
                        const std::string& p, const std::string& d) {
   const std::string cover = id + "_cover";
-  w.require_helper(cover, leaf.cover(k)->to_glsl(w.prefix() + "_" + cover), PatchCover::glsl_suffixes());
+  w.require_helper(cover, leaf.trim_glsl(w.prefix() + "_" + cover, k), leaf.trim_glsl_suffixes(k));
   return w.call(cover, p + ", " + d);
 }
 
@@ -481,7 +504,7 @@ std::string emit_leaf(SceneGlslWriter& w, const CompiledNode& n, const std::stri
       w.value(emit_piece(w, leaf, id + "_piece0", 0, n, p), "the union of the approximation's pieces");
   for (std::size_t k = 1; k < leaf.piece_count(); ++k) {
     const std::string piece = id + "_piece" + std::to_string(k);
-    w.statement("  if (" + leaf.cover(k)->hull_glsl(p) + " < " + value + ") {\n");
+    w.statement("  if (" + leaf.trim_hull_glsl(p, k) + " < " + value + ") {\n");
     const std::string d = emit_piece_distance(w, leaf, piece, k, n, p);
     w.statement("  if (abs(" + d + ") < " + value + ") " + value + " = min(" + value + ", " +
                 cover_call(w, leaf, piece, k, p, d) + ");\n  }\n");

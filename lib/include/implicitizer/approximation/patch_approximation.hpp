@@ -15,10 +15,12 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "implicitizer/approximation/trim_polytope.hpp"
 #include "implicitizer/core/budget.hpp"
 #include "implicitizer/implicitization/parametrization.hpp"
 #include "implicitizer/implicitization/patch_bounds.hpp"
@@ -60,14 +62,17 @@ struct ApproximationPiece {
   /// Every point of X(S) is within this distance (absolute units) of {q = 0}.
   double patch_to_surface = 0;
   BoundMethod patch_to_surface_method = BoundMethod::certified;
-  /// Every point of {q = 0} near X(S) (within 0.1·h of it, h the largest half side of
-  /// `box`: the part the trimming keeps) is within this distance of X(D') (D' = D
-  /// widened by a quarter of its sides, so that the edge's continuation counts as it
-  /// does for the exact equation), measured on the sample of
-  /// lib/src/approximation/surface_distance.hpp.
+  /// Every point of {q = 0} the trimming keeps (in `polytope` ∩ `box` when there is a
+  /// polytope; else within 0.1·h of X(S), h the largest half side of `box`, what a box
+  /// cover keeps) is within this distance of X(D') (D' = D widened by a quarter of its
+  /// sides, so that the edge's continuation counts as it does for the exact equation),
+  /// measured on the sample of lib/src/approximation/surface_distance.hpp.
   double surface_to_patch = 0;
   BoundMethod surface_to_patch_method = BoundMethod::measured;
   std::size_t surface_to_patch_samples = 0;  ///< points of {q = 0} the measurement used
+  /// The polytope q = 0 is trimmed to (with `box`), when its zeros there met the
+  /// tolerance; none: the piece is trimmed to a box cover of X(S) (scene/patch_cover.hpp).
+  std::optional<TrimPolytope> polytope;
 };
 
 /// The result: pieces and the bounds relative to the patch box's diagonal.

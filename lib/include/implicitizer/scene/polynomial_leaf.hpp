@@ -72,6 +72,7 @@
 #include "implicitizer/implicitization/patch_bounds.hpp"
 #include "implicitizer/polynomial/polynomial.hpp"
 #include "implicitizer/scene/patch_cover.hpp"
+#include "implicitizer/scene/polytope_trim.hpp"
 #include "implicitizer/scene/scene_node.hpp"
 #include "implicitizer/scene/vec3.hpp"
 #include "implicitizer/sdf/fast_sdf.hpp"
@@ -116,9 +117,9 @@ class PolynomialLeaf {
     T value = pieces_.front().evaluate(p);
     for (std::size_t k = 1; k < pieces_.size(); ++k) {
       const Piece& piece = pieces_[k];
-      if (!(piece.cover->hull_distance_lower_bound(p) < value)) continue;
+      if (!(piece.hull_distance_lower_bound(p) < value)) continue;
       const T d = piece.distance(p);
-      if (std::abs(d) < value) value = std::min(value, piece.cover->distance_lower_bound(p, d));
+      if (std::abs(d) < value) value = std::min(value, piece.trim(p, d));
     }
     return value;
   }
@@ -134,16 +135,27 @@ class PolynomialLeaf {
   /// covers, and each further piece's culling test (what a tolerance compares).
   std::size_t glsl_lines() const;
   /// `float FUNCTION(vec3 p)`: the distance of piece k's surface (F = 0, or q_k = 0)
-  /// before trimming (the scene's GLSL applies piece k's cover when trimmed()).
+  /// before trimming (the scene's GLSL applies piece k's trimming when trimmed()).
   std::string to_glsl(const std::string& function, std::size_t k = 0) const {
     const Piece& piece = pieces_[k];
     return piece.fast ? piece.fast->to_glsl(function) : piece.safe->to_glsl(function);
   }
-  /// The cover piece k is cut to (null when not trimmed).
+  /// The cover piece k is cut to (null when not trimmed, or trimmed to a polytope).
   const PatchCover* cover(std::size_t k = 0) const { return pieces_[k].cover ? &*pieces_[k].cover : nullptr; }
+  /// The polytope approximated piece k is cut to (null: none, or a cover).
+  const PolytopeTrim* polytope(std::size_t k = 0) const {
+    return pieces_[k].polytope ? &*pieces_[k].polytope : nullptr;
+  }
+  /// `float FUNCTION(vec3 p, float d)`: piece k's trimming applied to its distance d
+  /// (its cover's or its polytope's; precondition: trimmed()).
+  std::string trim_glsl(const std::string& function, std::size_t k = 0) const;
+  /// The global names trim_glsl(FUNCTION, k) defines besides FUNCTION: FUNCTION + each suffix.
+  std::vector<std::string> trim_glsl_suffixes(std::size_t k = 0) const;
+  /// The GLSL expression of piece k's hull distance at `p` (the culling test's).
+  std::string trim_hull_glsl(const std::string& p, std::size_t k = 0) const;
 
-  /// Whether the leaf is a patch trimmed to its cover(s).
-  bool trimmed() const { return pieces_.front().cover.has_value(); }
+  /// Whether the leaf is a patch trimmed to its cover(s) or polytopes.
+  bool trimmed() const { return pieces_.front().cover || pieces_.front().polytope; }
   /// The shape the leaf's value describes (never automatic: what was picked).
   SdfShape shape() const { return shape_; }
   /// Why that shape: "asked", or decide_enclosure()'s reason under automatic.
@@ -151,7 +163,8 @@ class PolynomialLeaf {
   /// Whether the value is that of −F (a solid whose F is negative on its box's
   /// boundary: the enclosed region is then where F > 0).
   bool negated() const { return negated_; }
-  /// The box around every piece's cover boxes, float corners (trimmed leaves only).
+  /// The box around every piece's trimming (cover boxes or polytope boxes), float
+  /// corners (trimmed leaves only).
   Vec3<float> trim_lo() const { return trim_corner(false); }
   /// See trim_lo().
   Vec3<float> trim_hi() const { return trim_corner(true); }
@@ -170,23 +183,36 @@ class PolynomialLeaf {
   const std::string& tolerance_kept_exact() const { return kept_exact_; }
 
  private:
-  // One surface of the leaf, in its own frame box, trimmed to its own cover.
+  // One surface of the leaf, in its own frame box, trimmed to its own cover or (an
+  // approximated piece whose zeros there met the tolerance) its own polytope.
   struct Piece {
     // Exactly one is set, by the mode (a branch per evaluation is cheaper than
     // std::visit's dispatch and reads as plainly).
     std::optional<FastSdf> fast;
     std::optional<SafeSdf> safe;
+    // At most one is set: none for an untrimmed leaf.
     std::optional<PatchCover> cover;
+    std::optional<PolytopeTrim> polytope;
 
     // The surface's distance, untrimmed.
     template <typename T>
     T distance(const Vec3<T>& p) const {
       return fast ? fast->evaluate<T>(p.x, p.y, p.z) : safe->evaluate<T>(p.x, p.y, p.z);
     }
+    // The trimmed value of a distance d at p (d itself when untrimmed).
+    template <typename T>
+    T trim(const Vec3<T>& p, T d) const {
+      if (cover) return cover->distance_lower_bound(p, d);
+      return polytope ? polytope->distance_lower_bound(p, d) : d;
+    }
+    // A lower bound of trim(p, d) for every d (precondition: trimmed).
+    template <typename T>
+    T hull_distance_lower_bound(const Vec3<T>& p) const {
+      return cover ? cover->hull_distance_lower_bound(p) : polytope->hull_distance_lower_bound(p);
+    }
     template <typename T>
     T evaluate(const Vec3<T>& p) const {
-      const T d = distance(p);
-      return cover ? cover->distance_lower_bound(p, d) : d;
+      return trim(p, distance(p));
     }
   };
 
