@@ -57,6 +57,20 @@ struct ServerConfig {
   /// before it is cancelled.
   std::chrono::milliseconds shutdown_grace{5'000};
 
+  // ---- jobs (POST /v1/jobs) ------------------------------------------------
+  /// --max-job-seconds: a job's time limit (its request's timeout_ms may lower it).
+  std::chrono::seconds max_job_time{3600};
+  /// --job-ttl: how long a finished job's result is kept, in seconds.
+  std::chrono::seconds job_ttl{3600};
+  /// --max-jobs-per-client: jobs one client (peer address) may have queued or
+  /// running; one more gets 429 + Retry-After.
+  std::size_t max_jobs_per_client = 16;
+  /// --job-threads: threads running jobs, apart from the request workers.
+  unsigned job_threads = 1;
+  /// --store: where jobs are kept: `memory` (the default; lost on restart) or
+  /// `sqlite:PATH` (`sqlite` alone: kDefaultSqlitePath).
+  std::string store = "memory";
+
   // ---- browsers and logs ----------------------------------------------------
   /// --cors-origins: origins allowed to call the API from a browser; `*` (the
   /// default) allows any, an empty list none.
@@ -68,6 +82,9 @@ struct ServerConfig {
   /// The memory limit of one computation in bytes: max_memory_mb, or the derived default.
   std::size_t effective_max_memory_bytes() const;
 };
+
+/// The file `--store sqlite` uses: in the server's working directory.
+inline constexpr const char* kDefaultSqlitePath = "implicitizer-jobs.sqlite3";
 
 /// A command line the server cannot start with; main() prints it with the usage.
 class UsageError : public std::runtime_error {

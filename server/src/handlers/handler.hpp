@@ -5,10 +5,12 @@
 /// at once, or hands back a Computation that the session runs on the worker pool,
 /// since no algebra may run on a network thread.
 
+#include <chrono>
 #include <functional>
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -30,8 +32,21 @@ struct Computation {
   Budget budget;
 };
 
-/// A handler's answer: a response now, or a computation for the pool.
-using HandlerResult = std::variant<Response, Computation>;
+/// A response written as it is produced (Server-Sent Events): `head` first (status
+/// and headers, no length: the body ends when the connection closes), then, every
+/// `interval`, whatever `next()` returns, until it says that was the last piece.
+/// `next` runs on the connection's network thread: it must be quick.
+struct EventStream {
+  Response head;
+  std::chrono::milliseconds interval{250};
+  /// The next bytes to write ("" for nothing yet) and whether the stream ends after them.
+  std::function<std::pair<std::string, bool>()> next;
+};
+
+/// A handler's answer: a response now, a computation for the pool, or a stream.
+using HandlerResult = std::variant<Response, Computation, EventStream>;
+
+class JobManager;
 
 /// The shared state handlers may use. Outlives every request.
 struct HandlerContext {
@@ -40,6 +55,8 @@ struct HandlerContext {
   MetricsRegistry& metrics;
   /// Reads the pool's and the cache's gauges for /metrics.
   std::function<MetricsGauges()> gauges;
+  /// The jobs API's engine (null: the /v1/jobs routes answer 404).
+  JobManager* jobs = nullptr;
 };
 
 /// Cache keys: appends `value` length-prefixed, so that no two field sequences

@@ -1,0 +1,51 @@
+#pragma once
+/// \file
+/// A job as the stores keep it: what was asked, by whom, how far it got and, once
+/// finished, the synchronous endpoint's response. Progress is not here: it lives in
+/// the running computation's budget (JobManager reads it there).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace implicitizer::server {
+
+/// Where a job is in its life: queued → running → done | failed | cancelled
+/// (queued → cancelled too). A job still running when its process died is queued
+/// again by a persistent store.
+enum class JobStatus { queued, running, done, failed, cancelled };
+
+/// "queued", "running", "done", "failed" or "cancelled".
+const char* to_string(JobStatus status);
+/// The status named `text`; nullopt for any other text.
+std::optional<JobStatus> parse_job_status(std::string_view text);
+/// Whether `status` is one a job never leaves (done, failed, cancelled).
+bool is_finished(JobStatus status);
+
+/// The response a finished job answers: exactly what its synchronous endpoint
+/// would have written (status, content type, the endpoint's own headers, body).
+struct JobResult {
+  unsigned http_status = 200;
+  std::string content_type;
+  /// The endpoint's own headers (X-Cache, X-Render-*), not the transport's.
+  std::vector<std::pair<std::string, std::string>> headers;
+  std::string body;
+};
+
+/// One job.
+struct JobRecord {
+  std::string id;       ///< 32 random hex digits: unguessable, since ids are the only access control
+  std::string kind;     ///< the endpoint: implicitize, groebner, resultant, sdf or render
+  std::string request;  ///< the endpoint's request body (JSON text)
+  std::string client;   ///< who submitted it (the peer address), for the per-client cap
+  JobStatus status = JobStatus::queued;
+  std::int64_t created_at_ms = 0;   ///< Unix milliseconds
+  std::int64_t started_at_ms = 0;   ///< Unix milliseconds; 0 until it first runs
+  std::int64_t finished_at_ms = 0;  ///< Unix milliseconds; 0 until finished (the TTL counts from here)
+  std::optional<JobResult> result;  ///< set when done or failed
+};
+
+}  // namespace implicitizer::server

@@ -1,0 +1,44 @@
+#pragma once
+/// \file
+/// Where jobs are kept: one interface, so that the embedded store (memory), SQLite
+/// and a shared store (Redis) are interchangeable behind --store. Every operation is
+/// atomic on its own; the JobManager holds no lock of the store's while computing.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "jobs/job.hpp"
+
+namespace implicitizer::server {
+
+/// The jobs of one server (or of several replicas sharing a store).
+class JobStore {
+ public:
+  virtual ~JobStore() = default;
+
+  /// Adds `job` (a new id). A job inserted queued is later returned by claim_next().
+  virtual void insert(const JobRecord& job) = 0;
+  /// The job `id`, or nullopt when there is none (never was, removed, expired).
+  virtual std::optional<JobRecord> find(const std::string& id) = 0;
+  /// Takes the oldest queued job and marks it running, started at `now_ms` (Unix
+  /// milliseconds); nullopt when none is queued.
+  virtual std::optional<JobRecord> claim_next(std::int64_t now_ms) = 0;
+  /// Marks the running job `id` finished with `status` (done, failed, cancelled) and
+  /// `result` at `finished_at_ms` (Unix milliseconds). False when it is not running.
+  virtual bool finish(const std::string& id, JobStatus status, const std::optional<JobResult>& result,
+                      std::int64_t finished_at_ms) = 0;
+  /// Marks the queued job `id` cancelled at `finished_at`; false when it is not queued.
+  virtual bool cancel_queued(const std::string& id, std::int64_t finished_at_ms) = 0;
+  /// Removes the finished job `id`; false when there is no finished job `id`.
+  virtual bool remove_finished(const std::string& id) = 0;
+  /// Jobs of `client` that are queued or running.
+  virtual std::size_t count_unfinished(const std::string& client) = 0;
+  /// Removes the jobs finished before `cutoff_ms` (Unix milliseconds); returns how many.
+  virtual std::size_t remove_finished_before(std::int64_t cutoff_ms) = 0;
+  /// Jobs queued or running, of every client.
+  virtual std::size_t count_unfinished() = 0;
+};
+
+}  // namespace implicitizer::server
