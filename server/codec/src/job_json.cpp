@@ -6,7 +6,11 @@
 namespace implicitizer {
 
 JobSubmission decode_job_submission(std::string_view body, const JsonParams& limits) {
-  const rapidjson::Document document = json::parse_object(body, limits);
+  // The wrapper adds one level to the deepest body an endpoint accepts (a scene's);
+  // the endpoint applies its own limit to `request` when it decodes it.
+  JsonParams wrapper_limits = json::with_room_for_a_scene(limits);
+  wrapper_limits.max_depth += 1;
+  const rapidjson::Document document = json::parse_object(body, wrapper_limits);
   json::ObjectReader reader(document);
   JobSubmission submission;
   submission.kind = json::read_string(reader.require("kind"), "kind");
