@@ -15,11 +15,10 @@ import socket
 import sys
 import tempfile
 import time
-import traceback
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from server_harness import LOAD_ALLOWANCE_S, Checks, Server, error_code  # noqa: E402
+from server_harness import LOAD_ALLOWANCE_S, Checks, Server, error_code, run_tests  # noqa: E402
 
 BIN = sys.argv[1]
 CHECKS = Checks()
@@ -400,12 +399,7 @@ def main():
         lambda: test_bad_store_flag(BIN),
     ]
     try:
-        for test in tests:
-            try:
-                test()
-            except Exception:  # noqa: BLE001 - a crash of one test is a failure, the others still run
-                failures.append(traceback.format_exc())
-                print("FAIL (exception):", traceback.format_exc())
+        run_tests(CHECKS, tests)
         check(s.proc.poll() is None and fresh.proc.poll() is None, "the servers survived everything")
         check(s.stop() == 0 and fresh.stop() == 0, "the servers exit 0 on SIGTERM")
     finally:
