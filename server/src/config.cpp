@@ -41,8 +41,9 @@ const char* const kServerUsage =
     "  --job-ttl N                 seconds a finished job's result is kept (3600)\n"
     "  --max-jobs-per-client N     queued or running jobs per client before 429 (16)\n"
     "  --job-threads N             threads running jobs, apart from --threads (1)\n"
-    "  --store STORE               where jobs are kept: memory, or sqlite[:PATH]\n"
-    "                              (sqlite alone: ./implicitizer-jobs.sqlite3) (memory)\n"
+    "  --store STORE               where jobs are kept: memory, sqlite[:PATH] (sqlite alone:\n"
+    "                              ./implicitizer-jobs.sqlite3) or redis://HOST:PORT (memory)\n"
+    "  --job-lease-seconds N       with redis: a dead replica's job is taken over after this (15)\n"
     "  --cors-origins LIST         comma-separated allowed origins, * for any, '' for none (*)\n"
     "  --quiet                     no JSON-lines access log on stderr\n"
     "  --help                      this text\n";
@@ -93,12 +94,20 @@ std::vector<std::string> split_origins(const std::string& text) {
   return out;
 }
 
-// `memory`, `sqlite` or `sqlite:PATH`, with the default path filled in.
+// `memory`, `sqlite`, `sqlite:PATH` or `redis://HOST:PORT`, with the default path filled in.
 std::string checked_store(const std::string& text) {
   if (text == "memory") return text;
   if (text == "sqlite") return std::string("sqlite:") + kDefaultSqlitePath;
   if (text.rfind("sqlite:", 0) == 0 && text.size() > 7) return text;
-  throw UsageError("--store needs memory, sqlite or sqlite:PATH, not '" + text + "'");
+  if (text.rfind("redis://", 0) == 0) {
+    const std::string address = text.substr(8);
+    const std::size_t colon = address.rfind(':');
+    if (colon != std::string::npos && colon > 0) {
+      parse_unsigned("store", address.substr(colon + 1), 1, 65535);
+      return text;
+    }
+  }
+  throw UsageError("--store needs memory, sqlite, sqlite:PATH or redis://HOST:PORT, not '" + text + "'");
 }
 
 using FlagSetter = std::function<void(const std::string& flag, const std::string& value)>;
@@ -148,6 +157,7 @@ std::map<std::string, FlagSetter> make_flag_setters(ServerConfig& config) {
       {"job-ttl", seconds(config.job_ttl)},
       {"max-jobs-per-client", count(config.max_jobs_per_client, 1, 1'000'000)},
       {"job-threads", count(config.job_threads, 1, 1024)},
+      {"job-lease-seconds", seconds(config.job_lease)},
       {"store", [&](const std::string&, const std::string& v) { config.store = checked_store(v); }},
       {"cors-origins", [&](const std::string&, const std::string& v) { config.cors_origins = split_origins(v); }},
   };

@@ -67,9 +67,13 @@ struct ServerConfig {
   std::size_t max_jobs_per_client = 16;
   /// --job-threads: threads running jobs, apart from the request workers.
   unsigned job_threads = 1;
-  /// --store: where jobs are kept: `memory` (the default; lost on restart) or
-  /// `sqlite:PATH` (`sqlite` alone: kDefaultSqlitePath).
+  /// --store: where jobs are kept: `memory` (the default; lost on restart),
+  /// `sqlite:PATH` (`sqlite` alone: kDefaultSqlitePath) or `redis://HOST:PORT` (one
+  /// queue and result store for several replicas).
   std::string store = "memory";
+  /// --job-lease-seconds: with a shared store, a running job whose replica has not
+  /// renewed its lease for this long (it died) is queued again for another replica.
+  std::chrono::seconds job_lease{15};
 
   // ---- browsers and logs ----------------------------------------------------
   /// --cors-origins: origins allowed to call the API from a browser; `*` (the

@@ -85,15 +85,14 @@ Router::Router(HandlerContext context) : context_(std::move(context)), cors_(con
 void Router::add_job_routes() {
   const HandlerContext& c = context_;
   routes_.push_back({"/v1/jobs", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r, const RouteCall& call) {
-                       return HandlerResult(handle_job_submit(r, call.peer, c));
+                       return handle_job_submit(r, call.peer, c);
                      }});
   routes_.push_back({"/v1/jobs/{id}",
                      {http::verb::get, http::verb::delete_},
                      "GET, HEAD, DELETE, OPTIONS",
                      [&c](const Request& r, const RouteCall& call) {
                        const std::string& id = call.segments.front();
-                       return HandlerResult(r.method() == http::verb::delete_ ? handle_job_cancel(id, c)
-                                                                              : handle_job_status(id, c));
+                       return r.method() == http::verb::delete_ ? handle_job_cancel(id, c) : handle_job_status(id, c);
                      }});
   routes_.push_back(
       {"/v1/jobs/{id}/result", {http::verb::get}, "GET, HEAD, OPTIONS", [&c](const Request&, const RouteCall& call) {

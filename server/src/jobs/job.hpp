@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "implicitizer/codec/job_json.hpp"
+
 namespace implicitizer::server {
 
 /// Where a job is in its life: queued → running → done | failed | cancelled
@@ -46,6 +48,10 @@ struct JobRecord {
   std::int64_t started_at_ms = 0;   ///< Unix milliseconds; 0 until it first runs
   std::int64_t finished_at_ms = 0;  ///< Unix milliseconds; 0 until finished (the TTL counts from here)
   std::optional<JobResult> result;  ///< set when done or failed
+  /// A shared store's copy of a running job's progress and cancellation request,
+  /// written by the replica that runs it (JobStore::heartbeat); empty otherwise.
+  JobProgressView progress;
+  bool cancel_requested = false;
 };
 
 }  // namespace implicitizer::server

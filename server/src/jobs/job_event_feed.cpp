@@ -20,7 +20,12 @@ JobEventFeed::JobEventFeed(JobManager& jobs, std::string id, std::chrono::steady
 
 std::pair<std::string, bool> JobEventFeed::next() {
   const auto now = std::chrono::steady_clock::now();
-  std::optional<JobView> view = jobs_.view(id_);
+  std::optional<JobView> view;
+  try {
+    view = jobs_.view(id_);
+  } catch (const std::exception& e) {
+    return {make_event("end", encode_error("job_store_unavailable", e.what())), true};
+  }
   if (!view) return {make_event("end", encode_error("job_not_found", "no job " + id_)), true};
   const std::optional<JobStatus> status = parse_job_status(view->status);
   if ((status && is_finished(*status)) || now >= deadline_) return {make_event("end", encode_job(*view)), true};

@@ -1,5 +1,6 @@
 #include "jobs/job_manager.hpp"
 
+#include <iostream>
 #include <random>
 
 #include "computation_runner.hpp"
@@ -87,10 +88,17 @@ JobManager::JobManager(const ServerConfig& config, std::unique_ptr<JobStore> sto
              {"sdf", handle_sdf},
              {"render", handle_render}},
       store_(std::move(store)),
-      metrics_(metrics) {
+      metrics_(metrics),
+      lease_ms_(std::chrono::duration_cast<std::chrono::milliseconds>(config.job_lease).count()) {
   const unsigned n = std::max(1U, config.job_threads);
-  live_workers_ = n;
+  live_workers_ = n + 1;
   for (unsigned i = 0; i < n; ++i) threads_.emplace_back([this] { work(); });
+  threads_.emplace_back([this] {
+    beat();
+    std::lock_guard lock(mutex_);
+    --live_workers_;
+    exited_.notify_all();
+  });
 }
 
 JobManager::~JobManager() { stop(std::chrono::milliseconds(1000)); }
@@ -126,7 +134,12 @@ Response JobManager::submit(const Request& request, const std::string& client) {
   // Exactly the synchronous endpoint's checks: its refusal is this answer. What it
   // would compute is computed later, on a job thread, under a fresh budget.
   HandlerResult checked = kind->second(make_endpoint_request(kind->first, submission.request), context_);
-  JobRecord job{make_job_id(), kind->first, std::move(submission.request), client, JobStatus::queued, now_ms()};
+  JobRecord job;
+  job.id = make_job_id();
+  job.kind = kind->first;
+  job.request = std::move(submission.request);
+  job.client = client;
+  job.created_at_ms = now_ms();
   if (auto* answered = std::get_if<Response>(&checked)) {
     if (answered->result_int() >= 300) return std::move(*answered);
     // Answered at once (a cached result): the job is born finished.
@@ -159,17 +172,12 @@ JobView JobManager::make_view(const JobRecord& job) {
     std::lock_guard lock(mutex_);
     if (const auto live = live_.find(job.id); live != live_.end()) {
       view.cancel_requested = live->second.cancel_requested;
-      const ProgressReport step = live->second.budget.progress().step();
-      const ProgressReport stage = live->second.budget.progress().stage();
-      if (step.phase != nullptr) view.progress.phase = step.phase;
-      if (step.fraction() >= 0) view.progress.fraction = step.fraction();
-      view.progress.done = step.done;
-      view.progress.total = step.total;
-      if (stage.phase != nullptr) view.progress.stage = stage.phase;
-      view.progress.stage_done = stage.done;
-      view.progress.stage_total = stage.total;
-      view.progress.elapsed_ms =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - live->second.started).count();
+      view.progress = read_progress(live->second);
+    } else if (!job.progress.phase.empty()) {
+      // Running on another replica: what its last heartbeat published.
+      view.cancel_requested = job.cancel_requested;
+      view.progress = job.progress;
+      view.progress.elapsed_ms = static_cast<double>(std::max<std::int64_t>(0, now_ms() - job.started_at_ms));
     }
   } else if (is_finished(job.status)) {
     if (job.status == JobStatus::done) view.progress.fraction = 1.0;
@@ -182,6 +190,54 @@ JobView JobManager::make_view(const JobRecord& job) {
     view.result_url = "/v1/jobs/" + job.id + "/result";
   }
   return view;
+}
+
+JobProgressView JobManager::read_progress(const Live& live) {
+  JobProgressView progress;
+  progress.phase = "running";
+  const ProgressReport step = live.budget.progress().step();
+  const ProgressReport stage = live.budget.progress().stage();
+  if (step.phase != nullptr) progress.phase = step.phase;
+  if (step.fraction() >= 0) progress.fraction = step.fraction();
+  progress.done = step.done;
+  progress.total = step.total;
+  if (stage.phase != nullptr) progress.stage = stage.phase;
+  progress.stage_done = stage.done;
+  progress.stage_total = stage.total;
+  progress.elapsed_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - live.started).count();
+  return progress;
+}
+
+void JobManager::beat() {
+  std::unique_lock lock(mutex_);
+  while (!stopping_) {
+    heartbeat_wake_.wait_for(lock, kHeartbeat);
+    if (stopping_) break;
+    std::vector<std::pair<std::string, JobProgressView>> running;
+    for (const auto& [id, live] : live_) running.emplace_back(id, read_progress(live));
+    lock.unlock();
+    const std::int64_t lease_until = now_ms() + lease_ms_;
+    std::vector<std::string> to_cancel;
+    for (const auto& [id, progress] : running) {
+      try {
+        if (store_->heartbeat(id, progress, lease_until)) to_cancel.push_back(id);
+      } catch (const std::exception& e) {
+        report_store_error(e);  // the lease may lapse: another replica may take the job over
+      }
+    }
+    lock.lock();
+    for (const std::string& id : to_cancel) {
+      if (const auto live = live_.find(id); live != live_.end()) {
+        live->second.cancel_requested = true;
+        live->second.budget.cancel();
+      }
+    }
+  }
+}
+
+void JobManager::report_store_error(const std::exception& e) {
+  std::cerr << std::string("implicitizer-server: job store: ") + e.what() + "\n" << std::flush;
 }
 
 Response JobManager::result(const std::string& id) {
@@ -209,8 +265,9 @@ Response JobManager::cancel(const std::string& id) {
     return make_response(http::status::no_content, "", "application/json");
   }
   if (!store_->cancel_queued(id, now_ms())) {
-    // Running (claims and live_ change together under mutex_, so it is in live_
-    // unless it finished meanwhile).
+    // Running: here (claims and live_ change together under mutex_, so it is in
+    // live_ unless it finished meanwhile) or on another replica sharing the store.
+    store_->request_cancel(id);
     std::lock_guard lock(mutex_);
     if (const auto live = live_.find(id); live != live_.end()) {
       live->second.cancel_requested = true;
@@ -228,13 +285,17 @@ void JobManager::work() {
     {
       std::unique_lock lock(mutex_);
       while (!stopping_) {
-        job = store_->claim_next(now_ms());
+        try {
+          job = store_->claim_next(now_ms());
+        } catch (const std::exception& e) {
+          report_store_error(e);  // retried after the idle wait
+        }
         if (job) {
           live_.emplace(job->id, Live{Budget(), std::chrono::steady_clock::now(), false});
           break;
         }
         wake_.wait_for(lock, kIdleWake);
-        purge_expired();
+        tidy_store();
       }
       if (!job) {
         --live_workers_;
@@ -242,7 +303,15 @@ void JobManager::work() {
         return;
       }
     }
-    run_job(*job);
+    try {
+      run_job(*job);
+    } catch (const std::exception& e) {
+      // The store failed while the job finished: its lease (a shared store) or the
+      // next start (SQLite) queues it again.
+      report_store_error(e);
+      std::lock_guard lock(mutex_);
+      live_.erase(job->id);
+    }
   }
 }
 
@@ -292,15 +361,27 @@ void JobManager::run_job(const JobRecord& job) {
   store_->finish(job.id, status, result, now_ms());
 }
 
-void JobManager::purge_expired() {
+void JobManager::tidy_store() {
   const std::int64_t now = now_ms();
-  if (now < next_purge_ms_) return;
-  next_purge_ms_ = now + 1000;
-  store_->remove_finished_before(now -
-                                 std::chrono::duration_cast<std::chrono::milliseconds>(server_config_.job_ttl).count());
+  if (now < next_tidy_ms_) return;
+  next_tidy_ms_ = now + 1000;
+  try {
+    store_->remove_finished_before(
+        now - std::chrono::duration_cast<std::chrono::milliseconds>(server_config_.job_ttl).count());
+    store_->requeue_expired(now);
+  } catch (const std::exception& e) {
+    report_store_error(e);
+  }
 }
 
-std::size_t JobManager::unfinished() { return store_->count_unfinished(); }
+std::size_t JobManager::unfinished() {
+  try {
+    return store_->count_unfinished();
+  } catch (const std::exception& e) {
+    report_store_error(e);
+    return 0;
+  }
+}
 
 std::size_t JobManager::stop(std::chrono::milliseconds wait) {
   std::unique_lock lock(mutex_);
@@ -309,6 +390,7 @@ std::size_t JobManager::stop(std::chrono::milliseconds wait) {
     for (auto& [id, live] : live_) live.budget.cancel();
   }
   wake_.notify_all();
+  heartbeat_wake_.notify_all();
   exited_.wait_for(lock, wait, [this] { return live_workers_ == 0; });
   const std::size_t left = live_workers_;
   lock.unlock();

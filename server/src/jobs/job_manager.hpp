@@ -18,6 +18,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -67,6 +68,10 @@ class JobManager {
   /// Jobs queued or running (for /metrics).
   std::size_t unfinished();
 
+  /// How often a running job's lease is renewed and its progress published; also how
+  /// soon a cancel asked on another replica reaches the computation.
+  static constexpr std::chrono::milliseconds kHeartbeat{250};
+
  private:
   struct Live {
     Budget budget;  // the running computation's: cancel and progress
@@ -78,7 +83,13 @@ class JobManager {
   void run_job(const JobRecord& job);
   JobView make_view(const JobRecord& job);
   Request make_endpoint_request(const std::string& kind, const std::string& body) const;
-  void purge_expired();
+  // Every kHeartbeat: renews the leases of this replica's running jobs in the store,
+  // publishes their progress, and cancels those another replica asked to cancel.
+  void beat();
+  static JobProgressView read_progress(const Live& live);
+  // Once a second at most: drops expired results, queues again jobs whose lease ended.
+  void tidy_store();
+  static void report_store_error(const std::exception& e);
 
   const ServerConfig& server_config_;
   ServerConfig job_config_;  // the server's, with the job time limit as timeout cap and default
@@ -89,9 +100,11 @@ class JobManager {
 
   std::mutex mutex_;
   std::condition_variable wake_;
-  std::map<std::string, Live> live_;  // running jobs by id
+  std::map<std::string, Live> live_;        // running jobs by id
+  std::condition_variable heartbeat_wake_;  // only at stop
   bool stopping_ = false;
-  std::int64_t next_purge_ms_ = 0;
+  std::int64_t next_tidy_ms_ = 0;
+  const std::int64_t lease_ms_;
   std::size_t live_workers_ = 0;
   std::condition_variable exited_;  // a worker thread returned
   std::vector<std::thread> threads_;

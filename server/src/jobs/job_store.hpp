@@ -39,6 +39,23 @@ class JobStore {
   virtual std::size_t remove_finished_before(std::int64_t cutoff_ms) = 0;
   /// Jobs queued or running, of every client.
   virtual std::size_t count_unfinished() = 0;
+
+  // A store shared by several replicas also needs what follows: a job may run on
+  // another replica, and a replica may die with a job. A store of one process keeps
+  // these no-ops: the JobManager cancels and watches its own jobs directly.
+
+  /// Asks whichever replica runs job `id` to cancel it (seen at its next heartbeat).
+  virtual void request_cancel(const std::string& /*id*/) {}
+  /// Called every JobManager::kHeartbeat by the replica running job `id`: renews its
+  /// lease until `lease_until_ms` and publishes `progress`. Returns whether a cancel
+  /// was requested (request_cancel, perhaps on another replica).
+  virtual bool heartbeat(const std::string& /*id*/, const JobProgressView& /*progress*/,
+                         std::int64_t /*lease_until_ms*/) {
+    return false;
+  }
+  /// Queues again the running jobs whose lease ended before `now_ms` (their replica
+  /// died); returns how many.
+  virtual std::size_t requeue_expired(std::int64_t /*now_ms*/) { return 0; }
 };
 
 }  // namespace implicitizer::server
