@@ -37,6 +37,12 @@ struct JobResult {
   std::string body;
 };
 
+/// `headers` as "name\tvalue\n" lines, the form the persistent stores keep (HTTP
+/// allows neither character in a header's name or value).
+std::string join_headers(const std::vector<std::pair<std::string, std::string>>& headers);
+/// The headers join_headers() wrote; a line without a tab is skipped.
+std::vector<std::pair<std::string, std::string>> split_headers(const std::string& text);
+
 /// One job.
 struct JobRecord {
   std::string id;       ///< 32 random hex digits: unguessable, since ids are the only access control

@@ -10,6 +10,7 @@
 #include "handlers/resultant.hpp"
 #include "handlers/sdf.hpp"
 #include "jobs/memory_job_store.hpp"
+#include "jobs/redis_job_store.hpp"
 #include "jobs/sqlite_job_store.hpp"
 
 namespace implicitizer::server {
@@ -74,6 +75,13 @@ ServerConfig with_job_limits(const ServerConfig& config) {
 
 std::unique_ptr<JobStore> make_job_store(const ServerConfig& config) {
   if (config.store.rfind("sqlite:", 0) == 0) return std::make_unique<SqliteJobStore>(config.store.substr(7));
+  if (config.store.rfind("redis://", 0) == 0) {
+    // redis://HOST:PORT, checked by parse_server_flags.
+    const std::string address = config.store.substr(8);
+    const std::size_t colon = address.rfind(':');
+    return std::make_unique<RedisJobStore>(address.substr(0, colon), std::stoi(address.substr(colon + 1)),
+                                           std::chrono::duration_cast<std::chrono::milliseconds>(config.job_lease));
+  }
   return std::make_unique<MemoryJobStore>();
 }
 

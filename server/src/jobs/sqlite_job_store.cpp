@@ -23,28 +23,6 @@ constexpr const char* kColumns =
     "id, kind, request, client, status, created_at_ms, started_at_ms, finished_at_ms, http_status, content_type, "
     "headers, body";
 
-// Headers as "name\tvalue\n" lines: HTTP forbids both characters in names and values.
-std::string join_headers(const std::vector<std::pair<std::string, std::string>>& headers) {
-  std::string out;
-  for (const auto& [name, value] : headers) out += name + '\t' + value + '\n';
-  return out;
-}
-
-std::vector<std::pair<std::string, std::string>> split_headers(const std::string& text) {
-  std::vector<std::pair<std::string, std::string>> out;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t end = text.find('\n', start);
-    const std::string line = text.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    if (const std::size_t tab = line.find('\t'); tab != std::string::npos) {
-      out.emplace_back(line.substr(0, tab), line.substr(tab + 1));
-    }
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
-  return out;
-}
-
 }  // namespace
 
 // One prepared statement; binds by position (1-based), steps, finalizes on scope exit.
