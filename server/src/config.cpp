@@ -43,6 +43,7 @@ const char* const kServerUsage =
     "  --job-threads N             threads running jobs, apart from --threads (1)\n"
     "  --store STORE               where jobs are kept: memory, sqlite[:PATH] (sqlite alone:\n"
     "                              ./implicitizer-jobs.sqlite3) or redis://HOST:PORT (memory)\n"
+    "  --client-ip-header NAME     behind a proxy: the header naming the client, for the job cap\n"
     "  --job-lease-seconds N       with redis: a dead replica's job is taken over after this (15)\n"
     "  --cors-origins LIST         comma-separated allowed origins, * for any, '' for none (*)\n"
     "  --quiet                     no JSON-lines access log on stderr\n"
@@ -158,6 +159,7 @@ std::map<std::string, FlagSetter> make_flag_setters(ServerConfig& config) {
       {"max-jobs-per-client", count(config.max_jobs_per_client, 1, 1'000'000)},
       {"job-threads", count(config.job_threads, 1, 1024)},
       {"job-lease-seconds", seconds(config.job_lease)},
+      {"client-ip-header", [&](const std::string&, const std::string& v) { config.client_ip_header = v; }},
       {"store", [&](const std::string&, const std::string& v) { config.store = checked_store(v); }},
       {"cors-origins", [&](const std::string&, const std::string& v) { config.cors_origins = split_origins(v); }},
   };

@@ -71,6 +71,11 @@ struct ServerConfig {
   /// `sqlite:PATH` (`sqlite` alone: kDefaultSqlitePath) or `redis://HOST:PORT` (one
   /// queue and result store for several replicas).
   std::string store = "memory";
+  /// --client-ip-header: behind a proxy, the request header that names the client
+  /// (e.g. X-Real-IP), used for the per-client job cap instead of the peer address
+  /// (which is the proxy's). Empty (the default): the peer address; only set it when
+  /// every request comes through a proxy that sets the header, or clients could pick it.
+  std::string client_ip_header;
   /// --job-lease-seconds: with a shared store, a running job whose replica has not
   /// renewed its lease for this long (it died) is queued again for another replica.
   std::chrono::seconds job_lease{15};

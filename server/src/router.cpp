@@ -120,7 +120,14 @@ Routed Router::route(const Request& request, std::string_view peer) const {
   const std::string_view origin = header_value(request, http::field::origin);
   const bool preflight = request.method() == http::verb::options;
 
-  RouteCall call{{}, std::string(peer)};
+  // Behind a proxy the peer is the proxy: the configured header names the client.
+  std::string_view client = peer;
+  if (!context_.config.client_ip_header.empty()) {
+    if (const auto it = request.find(context_.config.client_ip_header); it != request.end()) {
+      client = std::string_view(it->value().data(), it->value().size());
+    }
+  }
+  RouteCall call{{}, std::string(client)};
   const auto route =
       std::find_if(routes_.begin(), routes_.end(), [&](const Route& r) { return r.matches(path, call.segments); });
   if (route != routes_.end()) {

@@ -41,7 +41,8 @@ class Router {
   Router(const Router&) = delete;
   Router& operator=(const Router&) = delete;
 
-  /// Routes `request` from `peer` (the client's address, for per-client limits): 404
+  /// Routes `request` from `peer` (the client's address, for per-client limits; with
+  /// --client-ip-header, that header's value when present): 404
   /// `not_found` for an unknown path, 405 `method_not_allowed` with Allow for a known
   /// path and a wrong method, preflight answers for OPTIONS, static files for other
   /// GET/HEAD paths when a static directory is configured.

@@ -229,6 +229,24 @@ def test_cap_and_cancel(binary):
         s.close()
 
 
+def test_cap_per_proxied_client(binary):
+    # Behind a proxy every peer is the proxy: --client-ip-header names the client.
+    s = Server(binary, "--job-threads", "1", "--max-jobs-per-client", "1", "--client-ip-header", "X-Real-IP",
+               "--quiet")
+    try:
+        body = json.dumps({"kind": "groebner", "request": LONG})
+        ids = []
+        for client, expected in [("10.0.0.1", 202), ("10.0.0.1", 429), ("10.0.0.2", 202)]:
+            status, _, data = s.request("POST", "/v1/jobs", body, {"X-Real-IP": client})
+            check(status == expected, "client %s: %s, expected %s" % (client, status, expected))
+            if status == 202:
+                ids.append(json.loads(data)["id"])
+        for job_id in ids:
+            s.request("DELETE", "/v1/jobs/" + job_id)
+    finally:
+        s.close()
+
+
 def measure_cancellation(s, job_id):
     """Cancels a running job and checks that the server's CPU stops growing within a
     second (plus the load allowance): the computation really stopped."""
@@ -395,6 +413,7 @@ def main():
         lambda: test_events(s),
         lambda: test_ttl_expires_results(BIN),
         lambda: test_cap_and_cancel(BIN),
+        lambda: test_cap_per_proxied_client(BIN),
         lambda: test_sqlite_keeps_results_and_requeues(BIN),
         lambda: test_bad_store_flag(BIN),
     ]
