@@ -26,8 +26,10 @@ tcp::endpoint resolve_endpoint(net::io_context& io, const std::string& host, uns
 }
 
 HandlerContext make_handler_context(const ServerConfig& config, ResultCache& cache, MetricsRegistry& metrics,
-                                    const WorkerPool& pool, JobManager& jobs) {
-  return HandlerContext{config, cache, metrics,
+                                    const WorkerPool& pool, JobManager& jobs, SharedResultCache* shared_cache) {
+  return HandlerContext{config,
+                        cache,
+                        metrics,
                         [&cache, &pool, &jobs] {
                           MetricsGauges g;
                           g.queue_depth = pool.queued();
@@ -43,7 +45,8 @@ HandlerContext make_handler_context(const ServerConfig& config, ResultCache& cac
                           g.jobs_unfinished = jobs.unfinished();
                           return g;
                         },
-                        &jobs};
+                        &jobs,
+                        shared_cache};
 }
 
 // The part of Server::kStopAfterCancel kept for writing the last answers; the rest
@@ -63,8 +66,9 @@ Server::Server(ServerConfig config)
     : config_(checked(std::move(config))),
       cache_(config_.cache_capacity),
       pool_(config_.effective_worker_threads(), config_.queue_capacity),
-      jobs_(config_, make_job_store(config_), cache_, metrics_),
-      router_(make_handler_context(config_, cache_, metrics_, pool_, jobs_)),
+      shared_cache_(make_shared_result_cache(config_)),
+      jobs_(config_, make_job_store(config_), cache_, metrics_, shared_cache_.get()),
+      router_(make_handler_context(config_, cache_, metrics_, pool_, jobs_, shared_cache_.get())),
       log_(!config_.quiet),
       session_context_{config_, router_, pool_, metrics_, log_},
       io_(static_cast<int>(config_.io_threads)) {

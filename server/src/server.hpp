@@ -63,6 +63,7 @@ class Server {
   MetricsRegistry metrics_;
   ResultCache cache_;
   WorkerPool pool_;
+  std::unique_ptr<SharedResultCache> shared_cache_;  // null unless --store redis://
   JobManager jobs_;
   Router router_;
   AccessLog log_;

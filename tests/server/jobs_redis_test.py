@@ -7,6 +7,7 @@ when its lease expires and finishes it.
 Usage: jobs_redis_test.py PATH/TO/implicitizer-server PATH/TO/redis-server
 Exits 77 (skipped) when no redis-server is given. Registered as server.jobs_redis."""
 
+import json
 import os
 import signal
 import socket
@@ -73,6 +74,16 @@ def test_shared_results(a, b):
     check(status == 200 and b"basis" in data, "its result through B: %s" % status)
 
 
+def test_shared_result_cache(a, b):
+    """A synchronous answer computed on A is a cache hit on B, which never computed it."""
+    request = {"polynomials": ["x^3-y", "y^2-x*z", "z^2-x"], "order": "lex"}
+    status_a, headers_a, body_a = a.request("POST", "/v1/groebner", json.dumps(request))
+    status_b, headers_b, body_b = b.request("POST", "/v1/groebner", json.dumps(request))
+    check(status_a == status_b == 200 and headers_a.get("x-cache") == "miss" and headers_b.get("x-cache") == "hit"
+          and body_a == body_b, "the result cache is shared: A %s %s, B %s %s" % (
+              status_a, headers_a.get("x-cache"), status_b, headers_b.get("x-cache")))
+
+
 def test_cancel_through_the_other_replica(binary, redis, a, servers):
     """A runs the job (B is started only once A has claimed it, and added to
     `servers`); B shows its progress and cancels it."""
@@ -134,6 +145,7 @@ def main():
         run_tests(CHECKS, [
             lambda: test_cancel_through_the_other_replica(binary, redis, a, servers),
             lambda: test_shared_results(a, servers[1]),
+            lambda: test_shared_result_cache(a, servers[1]),
             lambda: test_kill_9_takeover(a, servers[1]),
         ])
         # Unknown store addresses stop the start, with a message.

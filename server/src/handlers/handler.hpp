@@ -21,6 +21,7 @@
 #include "implicitizer/core/errors.hpp"
 #include "metrics_registry.hpp"
 #include "result_cache.hpp"
+#include "shared_result_cache.hpp"
 
 namespace implicitizer::server {
 
@@ -57,6 +58,8 @@ struct HandlerContext {
   std::function<MetricsGauges()> gauges;
   /// The jobs API's engine (null: the /v1/jobs routes answer 404).
   JobManager* jobs = nullptr;
+  /// The result cache shared with other replicas (null: none; --store redis://).
+  SharedResultCache* shared_cache = nullptr;
 };
 
 /// Cache keys: appends `value` length-prefixed, so that no two field sequences
@@ -112,9 +115,11 @@ HandlerResult handle_decoded(const Request& request, const HandlerContext& conte
 }
 
 /// The shape every cached algebra endpoint shares: the cached body for `key` if there
-/// is one (`X-Cache: hit`), else a Computation that runs `answer(decoded, budget)` on
-/// a worker under a budget for the request's timeout, caches the body it returns and
-/// answers it (`X-Cache: miss`). `answer` returns the encoded JSON body.
+/// is one (`X-Cache: hit`), else a Computation that, on a worker, looks in the shared
+/// cache (a hit there is `X-Cache: hit` too, and is kept in this replica's cache), else
+/// runs `answer(decoded, budget)` under a budget for the request's timeout, caches the
+/// body it returns in both and answers it (`X-Cache: miss`). `answer` returns the
+/// encoded JSON body.
 template <typename Request, typename Answer>
 HandlerResult cached_computation(Request decoded, std::string key, const HandlerContext& context, Answer answer) {
   if (const auto body = context.cache.find(key)) {
@@ -128,11 +133,17 @@ HandlerResult cached_computation(Request decoded, std::string key, const Handler
   // a timeout left in the request would restart it when the worker begins.
   decoded.timeout_seconds.reset();
   computation.run = [decoded = std::move(decoded), key = std::move(key), budget = computation.budget,
-                     cache = &context.cache, answer = std::move(answer)]() {
-    std::string body = answer(decoded, budget);
-    cache->insert(key, body);
-    Response response = make_json_response(http::status::ok, std::move(body));
-    response.set("X-Cache", "miss");
+                     cache = &context.cache, shared = context.shared_cache, answer = std::move(answer)]() {
+    std::optional<std::string> body;
+    if (shared != nullptr) body = shared->find(key);
+    const bool hit = body.has_value();
+    if (!hit) {
+      body = answer(decoded, budget);
+      if (shared != nullptr) shared->insert(key, *body);
+    }
+    cache->insert(key, *body);
+    Response response = make_json_response(http::status::ok, std::move(*body));
+    response.set("X-Cache", hit ? "hit" : "miss");
     return response;
   };
   return computation;

@@ -76,20 +76,24 @@ ServerConfig with_job_limits(const ServerConfig& config) {
 std::unique_ptr<JobStore> make_job_store(const ServerConfig& config) {
   if (config.store.rfind("sqlite:", 0) == 0) return std::make_unique<SqliteJobStore>(config.store.substr(7));
   if (config.store.rfind("redis://", 0) == 0) {
-    // redis://HOST:PORT, checked by parse_server_flags.
-    const std::string address = config.store.substr(8);
-    const std::size_t colon = address.rfind(':');
-    return std::make_unique<RedisJobStore>(address.substr(0, colon), std::stoi(address.substr(colon + 1)),
+    const auto [host, port] = parse_redis_address(config.store);
+    return std::make_unique<RedisJobStore>(host, port,
                                            std::chrono::duration_cast<std::chrono::milliseconds>(config.job_lease));
   }
   return std::make_unique<MemoryJobStore>();
 }
 
+std::unique_ptr<SharedResultCache> make_shared_result_cache(const ServerConfig& config) {
+  if (config.store.rfind("redis://", 0) != 0) return nullptr;
+  const auto [host, port] = parse_redis_address(config.store);
+  return std::make_unique<RedisResultCache>(host, port, config.job_ttl);
+}
+
 JobManager::JobManager(const ServerConfig& config, std::unique_ptr<JobStore> store, ResultCache& cache,
-                       MetricsRegistry& metrics)
+                       MetricsRegistry& metrics, SharedResultCache* shared_cache)
     : server_config_(config),
       job_config_(with_job_limits(config)),
-      context_{job_config_, cache, metrics, [] { return MetricsGauges{}; }},
+      context_{job_config_, cache, metrics, [] { return MetricsGauges{}; }, nullptr, shared_cache},
       kinds_{{"implicitize", handle_implicitize},
              {"groebner", handle_groebner},
              {"resultant", handle_resultant},

@@ -36,9 +36,11 @@ class JobManager {
   using KindHandler = std::function<HandlerResult(const Request&, const HandlerContext&)>;
 
   /// Jobs kept in `store`, computed with `config`'s job limits (--max-job-seconds as
-  /// the time cap) sharing `cache` and `metrics` with the synchronous endpoints.
+  /// the time cap) sharing `cache`, `metrics` and `shared_cache` (may be null) with
+  /// the synchronous endpoints.
   /// Starts config.job_threads threads.
-  JobManager(const ServerConfig& config, std::unique_ptr<JobStore> store, ResultCache& cache, MetricsRegistry& metrics);
+  JobManager(const ServerConfig& config, std::unique_ptr<JobStore> store, ResultCache& cache, MetricsRegistry& metrics,
+             SharedResultCache* shared_cache = nullptr);
   /// stop().
   ~JobManager();
   JobManager(const JobManager&) = delete;
@@ -110,8 +112,12 @@ class JobManager {
   std::vector<std::thread> threads_;
 };
 
-/// The store `--store` names (config.store): MemoryJobStore or SqliteJobStore.
+/// The store `--store` names (config.store): MemoryJobStore, SqliteJobStore or RedisJobStore.
 /// Throws std::runtime_error when the SQLite file cannot be opened.
 std::unique_ptr<JobStore> make_job_store(const ServerConfig& config);
+
+/// The shared result cache of `--store redis://...` (entries kept --job-ttl), or null
+/// for the stores of one process. Throws std::runtime_error when Redis cannot be reached.
+std::unique_ptr<SharedResultCache> make_shared_result_cache(const ServerConfig& config);
 
 }  // namespace implicitizer::server

@@ -173,53 +173,7 @@ JobRecord job_of(const std::string& id, const std::map<std::string, std::string>
 }  // namespace
 
 RedisJobStore::RedisJobStore(std::string host, int port, std::chrono::milliseconds lease)
-    : host_(std::move(host)), port_(port), lease_ms_(lease.count()) {
-  std::lock_guard lock(mutex_);
-  connect();
-  command({"PING"});
-}
-
-void RedisJobStore::connect() {
-  const timeval timeout{2, 0};
-  context_.reset(redisConnectWithTimeout(host_.c_str(), port_, timeout));
-  if (!context_ || context_->err) {
-    const std::string why = context_ ? context_->errstr : "out of memory";
-    context_.reset();
-    throw std::runtime_error("cannot connect to redis://" + host_ + ":" + std::to_string(port_) + ": " + why);
-  }
-  const timeval command_timeout{5, 0};
-  redisSetTimeout(context_.get(), command_timeout);
-}
-
-RedisJobStore::Reply RedisJobStore::command(const std::vector<std::string>& args) {
-  std::vector<const char*> argv;
-  std::vector<std::size_t> lengths;
-  for (const std::string& a : args) {
-    argv.push_back(a.data());
-    lengths.push_back(a.size());
-  }
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    if (!context_) connect();
-    Reply reply(static_cast<redisReply*>(
-        redisCommandArgv(context_.get(), static_cast<int>(argv.size()), argv.data(), lengths.data())));
-    if (!reply) {  // the connection broke: one fresh connection, one more try
-      context_.reset();
-      continue;
-    }
-    if (reply->type == REDIS_REPLY_ERROR) throw std::runtime_error("redis: " + std::string(reply->str, reply->len));
-    return reply;
-  }
-  throw std::runtime_error("redis://" + host_ + ":" + std::to_string(port_) + " does not answer");
-}
-
-long long RedisJobStore::eval_integer(const char* script, const std::vector<std::string>& keys,
-                                      const std::vector<std::string>& args) {
-  std::vector<std::string> all{"EVAL", script, std::to_string(keys.size())};
-  all.insert(all.end(), keys.begin(), keys.end());
-  all.insert(all.end(), args.begin(), args.end());
-  const Reply reply = command(all);
-  return reply->type == REDIS_REPLY_INTEGER ? reply->integer : 0;
-}
+    : lease_ms_(lease.count()), redis_(std::move(host), port) {}
 
 void RedisJobStore::insert(const JobRecord& job) {
   const bool queued = job.status == JobStatus::queued;
@@ -248,13 +202,11 @@ void RedisJobStore::insert(const JobRecord& job) {
         "headers",     join_headers(job.result->headers),       "body",         job.result->body};
     args.insert(args.end(), result.begin(), result.end());
   }
-  std::lock_guard lock(mutex_);
-  eval_integer(kInsert, {kQueue, kFinished}, args);
+  redis_.eval_integer(kInsert, {kQueue, kFinished}, args);
 }
 
 std::optional<JobRecord> RedisJobStore::find(const std::string& id) {
-  std::lock_guard lock(mutex_);
-  const Reply reply = command({"HGETALL", job_key(id)});
+  const RedisConnection::Reply reply = redis_.command({"HGETALL", job_key(id)});
   if (reply->type != REDIS_REPLY_ARRAY || reply->elements == 0) return std::nullopt;
   std::map<std::string, std::string> fields;
   for (std::size_t i = 0; i + 1 < reply->elements; i += 2) {
@@ -265,15 +217,10 @@ std::optional<JobRecord> RedisJobStore::find(const std::string& id) {
 }
 
 std::optional<JobRecord> RedisJobStore::claim_next(std::int64_t now_ms) {
-  std::string id;
-  {
-    std::lock_guard lock(mutex_);
-    const Reply reply = command(
-        {"EVAL", kClaim, "2", kQueue, kRunning, kPrefix, std::to_string(now_ms), std::to_string(now_ms + lease_ms_)});
-    if (reply->type != REDIS_REPLY_STRING) return std::nullopt;
-    id.assign(reply->str, reply->len);
-  }
-  return find(id);
+  const RedisConnection::Reply reply = redis_.command(
+      {"EVAL", kClaim, "2", kQueue, kRunning, kPrefix, std::to_string(now_ms), std::to_string(now_ms + lease_ms_)});
+  if (reply->type != REDIS_REPLY_STRING) return std::nullopt;
+  return find(std::string(reply->str, reply->len));
 }
 
 bool RedisJobStore::finish(const std::string& id, JobStatus status, const std::optional<JobResult>& result,
@@ -283,42 +230,34 @@ bool RedisJobStore::finish(const std::string& id, JobStatus status, const std::o
     args.insert(args.end(), {std::to_string(result->http_status), result->content_type, join_headers(result->headers),
                              result->body});
   }
-  std::lock_guard lock(mutex_);
-  return eval_integer(kFinish.c_str(), {kRunning, kFinished}, args) == 1;
+  return redis_.eval_integer(kFinish, {kRunning, kFinished}, args) == 1;
 }
 
 bool RedisJobStore::cancel_queued(const std::string& id, std::int64_t finished_at_ms) {
-  std::lock_guard lock(mutex_);
-  return eval_integer(kCancelQueued.c_str(), {kQueue, kFinished}, {kPrefix, id, std::to_string(finished_at_ms)}) == 1;
+  return redis_.eval_integer(kCancelQueued, {kQueue, kFinished}, {kPrefix, id, std::to_string(finished_at_ms)}) == 1;
 }
 
 bool RedisJobStore::remove_finished(const std::string& id) {
-  std::lock_guard lock(mutex_);
-  return eval_integer(kRemoveFinished, {kFinished}, {kPrefix, id}) == 1;
+  return redis_.eval_integer(kRemoveFinished, {kFinished}, {kPrefix, id}) == 1;
 }
 
 std::size_t RedisJobStore::count_unfinished(const std::string& client) {
-  std::lock_guard lock(mutex_);
-  const Reply reply = command({"SCARD", client_key(client)});
+  const RedisConnection::Reply reply = redis_.command({"SCARD", client_key(client)});
   return reply->type == REDIS_REPLY_INTEGER ? static_cast<std::size_t>(reply->integer) : 0;
 }
 
 std::size_t RedisJobStore::count_unfinished() {
-  std::lock_guard lock(mutex_);
-  const Reply queued = command({"LLEN", kQueue});
-  const Reply running = command({"LLEN", kRunning});
+  const RedisConnection::Reply queued = redis_.command({"LLEN", kQueue});
+  const RedisConnection::Reply running = redis_.command({"LLEN", kRunning});
   return static_cast<std::size_t>(queued->integer + running->integer);
 }
 
 std::size_t RedisJobStore::remove_finished_before(std::int64_t cutoff_ms) {
-  std::lock_guard lock(mutex_);
-  return static_cast<std::size_t>(eval_integer(kRemoveBefore, {kFinished}, {kPrefix, std::to_string(cutoff_ms)}));
+  return static_cast<std::size_t>(
+      redis_.eval_integer(kRemoveBefore, {kFinished}, {kPrefix, std::to_string(cutoff_ms)}));
 }
 
-void RedisJobStore::request_cancel(const std::string& id) {
-  std::lock_guard lock(mutex_);
-  eval_integer(kRequestCancel, {}, {kPrefix, id});
-}
+void RedisJobStore::request_cancel(const std::string& id) { redis_.eval_integer(kRequestCancel, {}, {kPrefix, id}); }
 
 bool RedisJobStore::heartbeat(const std::string& id, const JobProgressView& progress, std::int64_t lease_until_ms) {
   const std::vector<std::string> args{kPrefix,
@@ -338,14 +277,12 @@ bool RedisJobStore::heartbeat(const std::string& id, const JobProgressView& prog
                                       std::to_string(progress.stage_done),
                                       "p_stage_total",
                                       std::to_string(progress.stage_total)};
-  std::lock_guard lock(mutex_);
-  return eval_integer(kHeartbeat, {}, args) == 1;
+  return redis_.eval_integer(kHeartbeat, {}, args) == 1;
 }
 
 std::size_t RedisJobStore::requeue_expired(std::int64_t now_ms) {
-  std::lock_guard lock(mutex_);
   return static_cast<std::size_t>(
-      eval_integer(kRequeueExpired.c_str(), {kRunning, kQueue, kFinished}, {kPrefix, std::to_string(now_ms)}));
+      redis_.eval_integer(kRequeueExpired, {kRunning, kQueue, kFinished}, {kPrefix, std::to_string(now_ms)}));
 }
 
 }  // namespace implicitizer::server

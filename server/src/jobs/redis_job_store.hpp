@@ -12,21 +12,17 @@
 /// `jobs:running` lists of ids; `jobs:finished` a sorted set of ids by finishing time
 /// (for the TTL); `client:PEER` the set of a client's unfinished ids (for its cap).
 
-#include <hiredis/hiredis.h>
-
 #include <chrono>
 #include <cstdint>
-#include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
 #include "jobs/job_store.hpp"
+#include "redis_connection.hpp"
 
 namespace implicitizer::server {
 
-/// A JobStore over one Redis connection, serialized by a mutex; reconnects once per
-/// command when the connection was lost.
+/// A JobStore over one Redis connection (RedisConnection: serialized, reconnecting).
 class RedisJobStore : public JobStore {
  public:
   /// Connects to `host`:`port` and checks it answers; `lease` is how long a claimed
@@ -49,27 +45,8 @@ class RedisJobStore : public JobStore {
   std::size_t requeue_expired(std::int64_t now_ms) override;
 
  private:
-  struct ReplyDeleter {
-    void operator()(redisReply* reply) const { freeReplyObject(reply); }
-  };
-  using Reply = std::unique_ptr<redisReply, ReplyDeleter>;
-  struct ContextDeleter {
-    void operator()(redisContext* context) const { redisFree(context); }
-  };
-
-  void connect();
-  // One command; throws std::runtime_error for a Redis error or a connection that
-  // cannot be re-established. Called with mutex_ held.
-  Reply command(const std::vector<std::string>& args);
-  // EVAL of `script` with `keys` and `args`: the reply's integer (nil: 0).
-  long long eval_integer(const char* script, const std::vector<std::string>& keys,
-                         const std::vector<std::string>& args);
-
-  const std::string host_;
-  const int port_;
   const std::int64_t lease_ms_;
-  std::mutex mutex_;
-  std::unique_ptr<redisContext, ContextDeleter> context_;
+  RedisConnection redis_;
 };
 
 }  // namespace implicitizer::server
