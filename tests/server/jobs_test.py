@@ -18,7 +18,7 @@ import time
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from server_harness import LOAD_ALLOWANCE_S, Checks, Server, error_code, run_tests  # noqa: E402
+from server_harness import LOAD_ALLOWANCE_S, Checks, Server, close_showing_log, error_code, run_tests  # noqa: E402
 
 BIN = sys.argv[1]
 CHECKS = Checks()
@@ -383,10 +383,7 @@ def test_sqlite_keeps_results_and_requeues(binary):
             check(state is not None and state["status"] == "done" and state["http_status"] == 200
                   and len(state["result"]["basis"]) > 0, "sqlite: requeued job %s finished: %r" % (job_id, state))
     finally:
-        if failures:
-            print("---- server log (tail) ----")
-            print(s.log_text()[-3000:])
-        s.close()
+        close_showing_log(s, CHECKS)
         shutil.rmtree(base, ignore_errors=True)
 
 
@@ -422,10 +419,7 @@ def main():
         check(s.proc.poll() is None and fresh.proc.poll() is None, "the servers survived everything")
         check(s.stop() == 0 and fresh.stop() == 0, "the servers exit 0 on SIGTERM")
     finally:
-        if failures:
-            print("---- server log (tail) ----")
-            print(s.log_text()[-3000:])
-        s.close()
+        close_showing_log(s, CHECKS)
         fresh.close()
     print(CHECKS.summary())
     return 1 if failures else 0

@@ -51,6 +51,14 @@ def run_tests(checks, tests):
             print("FAIL (exception):", traceback.format_exc())
 
 
+def close_showing_log(server, checks):
+    """Closes `server`, first printing its log's tail when a check has failed."""
+    if checks.failures:
+        print("---- server log (tail) ----")
+        print(server.log_text()[-3000:])
+    server.close()
+
+
 def error_code(body):
     """The `error.code` of a JSON error body, or None."""
     try:
