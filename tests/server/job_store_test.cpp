@@ -48,7 +48,7 @@ class JobStoreTest : public ::testing::TestWithParam<std::string> {
 };
 
 TEST_P(JobStoreTest, ClaimsInSubmissionOrderAndSkipsCancelled) {
-  for (const char* id : {"a", "b", "c"}) store_->insert(make_job(id, "peer"));
+  for (const char* id : {"a", "b", "c"}) EXPECT_TRUE(store_->insert(make_job(id, "peer"), 3));
   EXPECT_EQ(store_->count_unfinished("peer"), 3U);
   EXPECT_TRUE(store_->cancel_queued("b", 2000));
   EXPECT_FALSE(store_->cancel_queued("b", 2000)) << "only a queued job is cancelled";
@@ -66,9 +66,23 @@ TEST_P(JobStoreTest, ClaimsInSubmissionOrderAndSkipsCancelled) {
   EXPECT_EQ(store_->count_unfinished("other"), 0U);
 }
 
+TEST_P(JobStoreTest, InsertKeepsAClientUnderItsCap) {
+  EXPECT_TRUE(store_->insert(make_job("a", "peer"), 2));
+  EXPECT_TRUE(store_->insert(make_job("b", "peer"), 2));
+  EXPECT_FALSE(store_->insert(make_job("c", "peer"), 2)) << "a third unfinished job";
+  EXPECT_FALSE(store_->find("c"));
+  EXPECT_TRUE(store_->insert(make_job("d", "other"), 2)) << "the cap is per client";
+  JobRecord cached = make_job("e", "peer");
+  cached.status = JobStatus::done;  // born finished (a cache hit): not counted
+  cached.finished_at_ms = 5;
+  EXPECT_TRUE(store_->insert(cached, 2));
+  EXPECT_TRUE(store_->cancel_queued("a", 6));
+  EXPECT_TRUE(store_->insert(make_job("c", "peer"), 2)) << "a place freed";
+}
+
 TEST_P(JobStoreTest, FinishKeepsTheResultUntilRemovedOrExpired) {
-  store_->insert(make_job("a", "peer"));
-  store_->insert(make_job("b", "peer"));
+  store_->insert(make_job("a", "peer"), 16);
+  store_->insert(make_job("b", "peer"), 16);
   ASSERT_TRUE(store_->claim_next(10));
   ASSERT_TRUE(store_->claim_next(10));
   EXPECT_TRUE(store_->finish("a", JobStatus::failed, make_result(), 100));
@@ -96,7 +110,7 @@ TEST(SqliteJobStoreTest, ReopeningQueuesAgainWhatWasRunningAndKeepsResults) {
   std::filesystem::remove(path);
   {
     SqliteJobStore store(path.string());
-    for (const char* id : {"done", "running", "queued"}) store.insert(make_job(id, "peer"));
+    for (const char* id : {"done", "running", "queued"}) store.insert(make_job(id, "peer"), 16);
     ASSERT_TRUE(store.claim_next(1));
     ASSERT_TRUE(store.finish("done", JobStatus::done, make_result(), 2));
     ASSERT_TRUE(store.claim_next(3));  // "running", left so: the process dies

@@ -84,6 +84,25 @@ def test_shared_result_cache(a, b):
               status_a, headers_a.get("x-cache"), status_b, headers_b.get("x-cache")))
 
 
+def test_cap_across_replicas(a, b):
+    """The per-client cap counts the jobs a client has on every replica."""
+    cap = 16  # the replicas' default --max-jobs-per-client
+    ids = []
+    for i in range(cap):
+        status, _, body = submit(a if i % 2 else b, "groebner", LONG)
+        check(status == 202, "job %d of the cap accepted: %s %r" % (i, status, body))
+        if status == 202:
+            ids.append(body["id"])
+    status_a, headers, body = submit(a, "groebner", LONG)
+    status_b, _, _ = submit(b, "groebner", LONG)
+    check(status_a == status_b == 429 and headers.get("retry-after"), "over the cap on both replicas: %s %s"
+          % (status_a, status_b))
+    for job_id in ids:
+        a.request("DELETE", "/v1/jobs/" + job_id)
+    for job_id in ids:
+        check(wait_for(b, job_id, finished) is not None, "job %s cancelled" % job_id)
+
+
 def test_cancel_through_the_other_replica(binary, redis, a, servers):
     """A runs the job (B is started only once A has claimed it, and added to
     `servers`); B shows its progress and cancels it."""
@@ -146,6 +165,7 @@ def main():
             lambda: test_cancel_through_the_other_replica(binary, redis, a, servers),
             lambda: test_shared_results(a, servers[1]),
             lambda: test_shared_result_cache(a, servers[1]),
+            lambda: test_cap_across_replicas(a, servers[1]),
             lambda: test_kill_9_takeover(a, servers[1]),
         ])
         # Unknown store addresses stop the start, with a message.

@@ -123,6 +123,14 @@ Request JobManager::make_endpoint_request(const std::string& kind, const std::st
   return request;
 }
 
+Response JobManager::make_too_many_jobs_response() const {
+  Response response = make_error_response(http::status::too_many_requests, "too_many_jobs",
+                                          "this client has " + std::to_string(server_config_.max_jobs_per_client) +
+                                              " jobs queued or running, the most allowed; retry when one has finished");
+  response.set(http::field::retry_after, std::to_string(server_config_.retry_after_seconds));
+  return response;
+}
+
 Response JobManager::submit(const Request& request, const std::string& client) {
   JobSubmission submission;
   try {
@@ -135,14 +143,9 @@ Response JobManager::submit(const Request& request, const std::string& client) {
     return make_error_response(http::status::bad_request, "unknown_job_kind",
                                "unknown job kind '" + submission.kind + "' (known: " + kKnownKinds + ")");
   }
-  if (store_->count_unfinished(client) >= server_config_.max_jobs_per_client) {
-    Response response =
-        make_error_response(http::status::too_many_requests, "too_many_jobs",
-                            "this client has " + std::to_string(server_config_.max_jobs_per_client) +
-                                " jobs queued or running, the most allowed; retry when one has finished");
-    response.set(http::field::retry_after, std::to_string(server_config_.retry_after_seconds));
-    return response;
-  }
+  // The cap first, so that a client at it is not decoded for nothing; the store checks
+  // it again, atomically, when it inserts.
+  if (store_->count_unfinished(client) >= server_config_.max_jobs_per_client) return make_too_many_jobs_response();
   // Exactly the synchronous endpoint's checks: its refusal is this answer. What it
   // would compute is computed later, on a job thread, under a fresh budget.
   HandlerResult checked = kind->second(make_endpoint_request(kind->first, submission.request), context_);
@@ -159,7 +162,7 @@ Response JobManager::submit(const Request& request, const std::string& client) {
     job.started_at_ms = job.finished_at_ms = job.created_at_ms;
     job.result = make_job_result(*answered);
   }
-  store_->insert(job);
+  if (!store_->insert(job, server_config_.max_jobs_per_client)) return make_too_many_jobs_response();
   wake_.notify_one();
   Response response = make_json_response(http::status::accepted, encode_job(make_view(job)));
   response.set(http::field::location, "/v1/jobs/" + job.id);

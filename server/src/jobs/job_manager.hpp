@@ -85,6 +85,7 @@ class JobManager {
   void run_job(const JobRecord& job);
   JobView make_view(const JobRecord& job);
   Request make_endpoint_request(const std::string& kind, const std::string& body) const;
+  Response make_too_many_jobs_response() const;
   // Every kHeartbeat: renews the leases of this replica's running jobs in the store,
   // publishes their progress, and cancels those another replica asked to cancel.
   void beat();

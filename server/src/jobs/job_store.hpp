@@ -18,8 +18,12 @@ class JobStore {
  public:
   virtual ~JobStore() = default;
 
-  /// Adds `job` (a new id). A job inserted queued is later returned by claim_next().
-  virtual void insert(const JobRecord& job) = 0;
+  /// Adds `job` (a new id) unless it is queued and its client already has
+  /// `max_unfinished` jobs queued or running: false then, and nothing is added. The
+  /// check and the insertion are one step, so concurrent submissions (on several
+  /// threads or replicas) cannot pass the cap together. A job inserted queued is
+  /// later returned by claim_next().
+  virtual bool insert(const JobRecord& job, std::size_t max_unfinished) = 0;
   /// The job `id`, or nullopt when there is none (never was, removed, expired).
   virtual std::optional<JobRecord> find(const std::string& id) = 0;
   /// Takes the oldest queued job and marks it running, started at `now_ms` (Unix

@@ -4,10 +4,17 @@
 
 namespace implicitizer::server {
 
-void MemoryJobStore::insert(const JobRecord& job) {
+bool MemoryJobStore::insert(const JobRecord& job, std::size_t max_unfinished) {
   std::lock_guard lock(mutex_);
+  if (job.status == JobStatus::queued) {
+    const auto unfinished = std::count_if(jobs_.begin(), jobs_.end(), [&](const auto& entry) {
+      return entry.second.client == job.client && !is_finished(entry.second.status);
+    });
+    if (static_cast<std::size_t>(unfinished) >= max_unfinished) return false;
+    queue_.push_back(job.id);
+  }
   jobs_[job.id] = job;
-  if (job.status == JobStatus::queued) queue_.push_back(job.id);
+  return true;
 }
 
 std::optional<JobRecord> MemoryJobStore::find(const std::string& id) {

@@ -14,7 +14,7 @@ namespace implicitizer::server {
 /// Jobs in a hash map, the queued ones also in FIFO order; one mutex.
 class MemoryJobStore : public JobStore {
  public:
-  void insert(const JobRecord& job) override;
+  bool insert(const JobRecord& job, std::size_t max_unfinished) override;
   std::optional<JobRecord> find(const std::string& id) override;
   std::optional<JobRecord> claim_next(std::int64_t now_ms) override;
   bool finish(const std::string& id, JobStatus status, const std::optional<JobResult>& result,

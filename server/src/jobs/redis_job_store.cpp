@@ -16,13 +16,16 @@ const std::string kFinished = std::string(kPrefix) + "jobs:finished";
 std::string job_key(const std::string& id) { return std::string(kPrefix) + "job:" + id; }
 std::string client_key(const std::string& client) { return std::string(kPrefix) + "client:" + client; }
 
-// ARGV: prefix, id, queued ("1"/"0"), finished_at_ms, client, then field/value pairs.
+// ARGV: prefix, id, queued ("1"/"0"), finished_at_ms, client, max_unfinished, then
+// field/value pairs. Returns 0 (nothing written) when a queued job's client is at its cap.
 constexpr const char* kInsert = R"(
 local key = ARGV[1] .. 'job:' .. ARGV[2]
-redis.call('HSET', key, unpack(ARGV, 6))
+local client = ARGV[1] .. 'client:' .. ARGV[5]
+if ARGV[3] == '1' and redis.call('SCARD', client) >= tonumber(ARGV[6]) then return 0 end
+redis.call('HSET', key, unpack(ARGV, 7))
 if ARGV[3] == '1' then
   redis.call('LPUSH', KEYS[1], ARGV[2])
-  redis.call('SADD', ARGV[1] .. 'client:' .. ARGV[5], ARGV[2])
+  redis.call('SADD', client, ARGV[2])
 else
   redis.call('ZADD', KEYS[2], ARGV[4], ARGV[2])
 end
@@ -175,13 +178,14 @@ JobRecord job_of(const std::string& id, const std::map<std::string, std::string>
 RedisJobStore::RedisJobStore(std::string host, int port, std::chrono::milliseconds lease)
     : lease_ms_(lease.count()), redis_(std::move(host), port) {}
 
-void RedisJobStore::insert(const JobRecord& job) {
+bool RedisJobStore::insert(const JobRecord& job, std::size_t max_unfinished) {
   const bool queued = job.status == JobStatus::queued;
   std::vector<std::string> args{kPrefix,
                                 job.id,
                                 queued ? "1" : "0",
                                 std::to_string(job.finished_at_ms),
                                 job.client,
+                                std::to_string(max_unfinished),
                                 "kind",
                                 job.kind,
                                 "request",
@@ -202,7 +206,7 @@ void RedisJobStore::insert(const JobRecord& job) {
         "headers",     join_headers(job.result->headers),       "body",         job.result->body};
     args.insert(args.end(), result.begin(), result.end());
   }
-  redis_.eval_integer(kInsert, {kQueue, kFinished}, args);
+  return redis_.eval_integer(kInsert, {kQueue, kFinished}, args) == 1;
 }
 
 std::optional<JobRecord> RedisJobStore::find(const std::string& id) {

@@ -117,8 +117,11 @@ void SqliteJobStore::execute(const char* sql) {
   }
 }
 
-void SqliteJobStore::insert(const JobRecord& job) {
+bool SqliteJobStore::insert(const JobRecord& job, std::size_t max_unfinished) {
   std::lock_guard lock(mutex_);
+  // One connection behind one mutex: nothing of this process writes between the
+  // count and the insert (and one process per file).
+  if (job.status == JobStatus::queued && count_unfinished_locked(job.client) >= max_unfinished) return false;
   Statement s(db_, std::string("INSERT INTO jobs (") + kColumns + ") VALUES (?,?,?,?,?,?,?,?,?,?,?,?)");
   s.bind(1, job.id).bind(2, job.kind).bind(3, job.request).bind(4, job.client);
   s.bind(5, std::string(to_string(job.status))).bind(6, job.created_at_ms).bind(7, job.started_at_ms);
@@ -128,6 +131,7 @@ void SqliteJobStore::insert(const JobRecord& job) {
     s.bind(11, join_headers(job.result->headers)).bind_blob(12, job.result->body);
   }
   s.step();
+  return true;
 }
 
 std::optional<JobRecord> SqliteJobStore::find(const std::string& id) {
@@ -187,6 +191,10 @@ bool SqliteJobStore::remove_finished(const std::string& id) {
 
 std::size_t SqliteJobStore::count_unfinished(const std::string& client) {
   std::lock_guard lock(mutex_);
+  return count_unfinished_locked(client);
+}
+
+std::size_t SqliteJobStore::count_unfinished_locked(const std::string& client) {
   Statement s(db_, "SELECT COUNT(*) FROM jobs WHERE status IN ('queued', 'running') AND client = ?");
   s.bind(1, client);
   s.step();

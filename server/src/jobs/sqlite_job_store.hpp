@@ -28,7 +28,7 @@ class SqliteJobStore : public JobStore {
   /// Jobs queued again at opening (they were running when the last process ended).
   std::size_t requeued_at_open() const { return requeued_at_open_; }
 
-  void insert(const JobRecord& job) override;
+  bool insert(const JobRecord& job, std::size_t max_unfinished) override;
   std::optional<JobRecord> find(const std::string& id) override;
   std::optional<JobRecord> claim_next(std::int64_t now_ms) override;
   bool finish(const std::string& id, JobStatus status, const std::optional<JobResult>& result,
@@ -42,6 +42,7 @@ class SqliteJobStore : public JobStore {
  private:
   class Statement;
   void execute(const char* sql);
+  std::size_t count_unfinished_locked(const std::string& client);
 
   std::mutex mutex_;
   sqlite3* db_ = nullptr;
