@@ -7,6 +7,9 @@
 #   - an identical body goes to the same replica: the access log names the same
 #     upstream for both copies, and the second copy is a hit in that replica's cache;
 #   - a body above 1 MiB gets nginx's 413 in the error shape of docs/api.md;
+#   - with redis-server installed, the replicas share a Redis job store (issue 22): a
+#     job submitted through nginx is polled through nginx (whichever replica
+#     answers) until done, and its event stream comes through nginx;
 #   - everything stops cleanly (replicas exit 0 on SIGTERM, nginx on SIGQUIT).
 # Exit 0: all checks passed; 1: a check failed; 77: nginx is not installed (ctest
 # reports the test as skipped).
@@ -21,6 +24,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/.." && pwd)
 SERVER=${1:-${SERVER:-$root/build/bin/implicitizer-server}}
 NGINX=${NGINX:-$(command -v nginx || echo /usr/sbin/nginx)}
+REDIS_SERVER=${REDIS_SERVER:-$(command -v redis-server || true)}
 
 die() { echo "run_replicas: FAIL: $*" >&2; exit 1; }
 say() { echo "run_replicas: $*" >&2; }
@@ -40,12 +44,14 @@ mkdir -p "$work/logs" "$work/temp"
 
 replica_pids=()
 nginx_pid=
+redis_pid=
 cleanup() {
   local pid
   if [[ -n "$nginx_pid" ]]; then kill -QUIT "$nginx_pid" 2>/dev/null || true; fi
   for pid in "${replica_pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
   if [[ -n "$nginx_pid" ]]; then wait "$nginx_pid" 2>/dev/null || true; fi
   for pid in "${replica_pids[@]}"; do wait "$pid" 2>/dev/null || true; done
+  if [[ -n "$redis_pid" ]]; then kill -TERM "$redis_pid" 2>/dev/null || true; wait "$redis_pid" 2>/dev/null || true; fi
   if [[ "${KEEP_LOGS:-0}" == 1 ]]; then say "logs kept in $work"; else rm -rf "$work"; fi
 }
 trap cleanup EXIT
@@ -55,7 +61,8 @@ trap cleanup EXIT
 replica_ports=()
 start_replica() {
   local n=$1 line='' i
-  "$SERVER" --host 127.0.0.1 --port 0 --quiet --threads 1 >"$work/replica$n.out" 2>"$work/replica$n.err" &
+  "$SERVER" --host 127.0.0.1 --port 0 --quiet --threads 1 "${store_flags[@]}" \
+    >"$work/replica$n.out" 2>"$work/replica$n.err" &
   replica_pids+=($!)
   # Polled for 30 s: a loaded 2-core machine may start a process slowly.
   for i in $(seq 300); do
@@ -139,6 +146,49 @@ implicitize_count() { # PORT: 200 answers of /v1/implicitize counted by that rep
     awk '/^implicitizer_http_requests_total\{endpoint="\/v1\/implicitize",status="200"\}/ { n += $2 } END { print n + 0 }'
 }
 
+# start_redis: a redis-server on a free loopback port, no persistence; sets store_flags
+# so that the replicas share it.
+store_flags=()
+start_redis() {
+  local port i
+  port=$(free_port)
+  "$REDIS_SERVER" --port "$port" --bind 127.0.0.1 --save '' --appendonly no --dir "$work" \
+    >"$work/redis.out" 2>&1 &
+  redis_pid=$!
+  for i in $(seq 300); do
+    python3 -c 'import socket, sys; c = socket.create_connection(("127.0.0.1", int(sys.argv[1])), 1); c.sendall(b"PING\r\n"); sys.exit(0 if c.recv(8).startswith(b"+PONG") else 1)' "$port" 2>/dev/null && break
+    kill -0 "$redis_pid" 2>/dev/null || die "redis-server exited: $(cat "$work/redis.out")"
+    sleep 0.1
+  done
+  store_flags=(--store "redis://127.0.0.1:$port" --client-ip-header X-Real-IP)
+  say "redis-server on port $port"
+}
+
+# check_jobs: a job submitted through nginx, polled through nginx until done, its
+# event stream read through nginx.
+check_jobs() {
+  local answer id i state events
+  answer=$(curl -s --max-time 30 -X POST --data-binary \
+    '{"kind": "groebner", "request": {"polynomials": ["x^2+y^2-1", "x-y"], "order": "lex"}}' "$front/v1/jobs") \
+    || die "job submission failed"
+  id=$(python3 -c 'import json, sys; print(json.loads(sys.argv[1])["id"])' "$answer" 2>/dev/null) \
+    || die "no job id in $answer"
+  for i in $(seq 600); do
+    state=$(curl -s --max-time 10 "$front/v1/jobs/$id" || true)
+    [[ "$state" == *'"status":"done"'* ]] && break
+    sleep 0.1
+  done
+  [[ "$state" == *'"result":{"basis":["y^2-1/2","x-y"]'* ]] || die "job $id through nginx: $state"
+  events=$(curl -s -N --max-time 30 "$front/v1/jobs/$id/events" || true)
+  [[ "$events" == *'event: end'*'"status":"done"'* ]] || die "events of job $id through nginx: $events"
+  say "a job through nginx: submitted, polled and streamed across the replicas"
+}
+
+if [[ -n "$REDIS_SERVER" ]]; then
+  start_redis
+else
+  say "no redis-server: the replicas keep jobs in memory, the jobs check is skipped"
+fi
 start_replica 1
 start_replica 2
 start_nginx
@@ -189,6 +239,8 @@ say "sent $sent requests ($((sent / 2)) distinct bodies, each twice): replica ${
 (( count1 > 0 && count2 > 0 )) || die "not both replicas answered ($count1, $count2)"
 (( count1 + count2 == sent )) || die "the replicas counted $((count1 + count2)) answers, $sent were sent"
 (( count1 == 2 * ${seen[${replica_ports[0]}]:-0} )) || die "replica ${replica_ports[0]}'s count disagrees with the access log"
+
+if [[ -n "$REDIS_SERVER" ]]; then check_jobs; fi
 
 # Stop: nginx first (graceful), then the replicas, which must exit 0.
 kill -QUIT "$nginx_pid"

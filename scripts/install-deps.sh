@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs what implicitizer needs on Debian (bookworm): the compiler and CMake, the
 # number libraries (GMP, MPFR, FLINT, CGAL), Boost (Beast is header-only inside
-# libboost-dev), RapidJSON, libpng (the preview renderer's PNG), GoogleTest, the
+# libboost-dev), RapidJSON, libpng (the preview renderer's PNG), SQLite and hiredis
+# with redis-server (the jobs API's stores, --store sqlite:PATH | redis://HOST:PORT;
+# the tests start their own redis-server on loopback), GoogleTest, the
 # oracles the tests compare against (Singular, Macaulay2), Giac's library for the
 # peer drivers the benchmarks build (bench/groebner_peers.py), glslang for checking
 # generated GLSL, EGL/OpenGL ES and Mesa's drivers for running it on llvmpipe
@@ -22,6 +24,7 @@ packages=(
   libgmp-dev libmpfr-dev libflint-dev libcgal-dev libeigen3-dev
   libboost-dev rapidjson-dev
   libpng-dev
+  libsqlite3-dev libhiredis-dev redis-server
   googletest libgtest-dev libgmock-dev
   singular macaulay2
   libgiac-dev

@@ -25,6 +25,7 @@ import math
 import os
 import socket
 import sys
+import time
 import urllib.parse
 from typing import NamedTuple
 
@@ -139,6 +140,12 @@ def _header_value(text):
         except ValueError:
             pass
     return text
+
+
+def _render_stats(headers):
+    """The render statistics of a PNG answer's X-Render-* headers, keys in snake_case."""
+    prefix = "x-render-"
+    return {k[len(prefix):].replace("-", "_"): _header_value(v) for k, v in headers.items() if k.startswith(prefix)}
 
 
 def _without_none(**fields):
@@ -282,10 +289,66 @@ class Client:
             except (KeyError, TypeError, ValueError) as e:
                 raise ImplicitizerError("bad_response", "no PNG in the answer: %s" % e, status=status) from None
             return RenderResult(png, stats)
-        prefix = "x-render-"
-        stats = {k[len(prefix):].replace("-", "_"): _header_value(v)
-                 for k, v in headers.items() if k.startswith(prefix)}
-        return RenderResult(body, stats)
+        return RenderResult(body, _render_stats(headers))
+
+    # ---- jobs: long computations (POST /v1/jobs) --------------------------------
+
+    def submit(self, kind, request):
+        """POST /v1/jobs: runs `request` (the dict the endpoint `kind` takes:
+        "implicitize", "groebner", "resultant", "sdf" or "render") as a job. Returns
+        the job's state (`id`, `status`, `progress`, ...). A request the endpoint
+        refuses raises its ImplicitizerError at once; too many jobs of this client
+        raises `too_many_jobs` (429, with `retry_after`)."""
+        return self._post_json("/v1/jobs", {"kind": kind, "request": request})
+
+    def job(self, job_id):
+        """GET /v1/jobs/ID: the job's state: `status` (queued, running, done, failed,
+        cancelled), `progress` (`phase`, `fraction` or None, `done`, `total`, `stage`,
+        `elapsed_ms`) and, once finished, `http_status` and `result`. Raises
+        `job_not_found` (404) for an unknown or expired id."""
+        status, _, body = self._exchange("GET", "/v1/jobs/" + job_id)
+        return _parse_json_answer(status, body)
+
+    def cancel(self, job_id):
+        """DELETE /v1/jobs/ID: cancels a queued or running job (its computation stops
+        within a second) and returns its state; removes a finished job and returns None."""
+        status, _, body = self._exchange("DELETE", "/v1/jobs/" + job_id)
+        return _parse_json_answer(status, body) if status == 202 else None
+
+    def wait(self, job_id, progress=None, poll_seconds=0.25, timeout=None):
+        """Polls job `job_id` until it finishes and returns what its endpoint answered:
+        the response object, or RenderResult for a render. `progress(state)` is called
+        with each new state (the job() dict) while it waits. A failed job raises the
+        endpoint's ImplicitizerError; a cancelled one raises `cancelled`; `timeout`
+        seconds (None: no limit) without the end raises `client_timeout` (the job
+        goes on: cancel() it if it is no longer wanted)."""
+        deadline = None if timeout is None else time.monotonic() + timeout
+        last = None
+        while True:
+            state = self.job(job_id)
+            if progress is not None and state != last:
+                progress(state)
+            last = state
+            if state["status"] in ("done", "failed"):
+                return self._job_answer(job_id, state)
+            if state["status"] == "cancelled":
+                raise ImplicitizerError("cancelled", "job %s was cancelled" % job_id, status=None, limit="cancelled")
+            if deadline is not None and time.monotonic() >= deadline:
+                raise ImplicitizerError("client_timeout", "job %s did not finish within %g s" % (job_id, timeout))
+            time.sleep(poll_seconds)
+
+    def run_as_job(self, kind, request, progress=None, poll_seconds=0.25, timeout=None):
+        """submit() then wait(): the endpoint's answer, computed as a job."""
+        return self.wait(self.submit(kind, request)["id"], progress, poll_seconds, timeout)
+
+    def _job_answer(self, job_id, state):
+        """The answer of a finished job, as the endpoint's method would return it."""
+        status, headers, body = self._exchange("GET", "/v1/jobs/%s/result" % job_id, allow_error=True)
+        if not 200 <= status < 300:
+            raise _error_from_answer(status, headers, body)
+        if state["kind"] == "render" and headers.get("content-type") == "image/png":
+            return RenderResult(body, _render_stats(headers))
+        return _parse_json_answer(status, body)
 
     # ---- HTTP ----------------------------------------------------------------
 
@@ -294,9 +357,10 @@ class Client:
         status, _, body = self._exchange("POST", path, request)
         return _parse_json_answer(status, body)
 
-    def _exchange(self, method, path, request=None):
-        """(status, headers with lower-case names, body bytes) of a 2xx answer;
-        raises ImplicitizerError for any other answer and for no answer at all."""
+    def _exchange(self, method, path, request=None, allow_error=False):
+        """(status, headers with lower-case names, body bytes) of a 2xx answer (of
+        any answer with `allow_error`); raises ImplicitizerError for any other answer
+        and for no answer at all."""
         kind = http.client.HTTPSConnection if self._scheme == "https" else http.client.HTTPConnection
         connection = kind(self._host, self._port, timeout=self.timeout)
         headers = {"Accept": "application/json, image/png, text/plain", "Connection": "close",
@@ -318,7 +382,7 @@ class Client:
             raise ImplicitizerError("connection_failed", "cannot reach %s: %s" % (self.url, e)) from None
         finally:
             connection.close()
-        if not 200 <= status < 300:
+        if not allow_error and not 200 <= status < 300:
             raise _error_from_answer(status, answer_headers, data)
         return status, answer_headers, data
 

@@ -37,6 +37,14 @@ const char* const kServerUsage =
     "  --max-polynomials N         polynomials of one ideal; more is 413 (1000)\n"
     "  --json-max-depth N          deepest JSON nesting accepted (32)\n"
     "  --shutdown-grace-ms N       on SIGTERM/SIGINT, time in-flight work may finish (5000)\n"
+    "  --max-job-seconds N         time limit of one job (3600)\n"
+    "  --job-ttl N                 seconds a finished job's result is kept (3600)\n"
+    "  --max-jobs-per-client N     queued or running jobs per client before 429 (16)\n"
+    "  --job-threads N             threads running jobs, apart from --threads (1)\n"
+    "  --store STORE               where jobs are kept: memory, sqlite[:PATH] (sqlite alone:\n"
+    "                              ./implicitizer-jobs.sqlite3) or redis://HOST:PORT (memory)\n"
+    "  --client-ip-header NAME     behind a proxy: the header naming the client, for the job cap\n"
+    "  --job-lease-seconds N       with redis: a dead replica's job is taken over after this (15)\n"
     "  --cors-origins LIST         comma-separated allowed origins, * for any, '' for none (*)\n"
     "  --quiet                     no JSON-lines access log on stderr\n"
     "  --help                      this text\n";
@@ -87,15 +95,35 @@ std::vector<std::string> split_origins(const std::string& text) {
   return out;
 }
 
-}  // namespace
+// `memory`, `sqlite`, `sqlite:PATH` or `redis://HOST:PORT`, with the default path filled in.
+std::string checked_store(const std::string& text) {
+  if (text == "memory") return text;
+  if (text == "sqlite") return std::string("sqlite:") + kDefaultSqlitePath;
+  if (text.rfind("sqlite:", 0) == 0 && text.size() > 7) return text;
+  if (text.rfind("redis://", 0) == 0) {
+    const std::string address = text.substr(8);
+    const std::size_t colon = address.rfind(':');
+    if (colon != std::string::npos && colon > 0) {
+      parse_unsigned("store", address.substr(colon + 1), 1, 65535);
+      return text;
+    }
+  }
+  throw UsageError("--store needs memory, sqlite, sqlite:PATH or redis://HOST:PORT, not '" + text + "'");
+}
 
-std::optional<ServerConfig> parse_server_flags(const std::vector<std::string>& args) {
-  ServerConfig config;
+using FlagSetter = std::function<void(const std::string& flag, const std::string& value)>;
+
+// The flags that take a value, each with what it sets in `config`.
+std::map<std::string, FlagSetter> make_flag_setters(ServerConfig& config) {
   constexpr std::uint64_t kBig = std::uint64_t{1} << 40;
-  using Setter = std::function<void(const std::string& flag, const std::string& value)>;
   auto millis = [](std::chrono::milliseconds& field, std::uint64_t min) {
     return [&field, min](const std::string& flag, const std::string& v) {
       field = std::chrono::milliseconds(parse_unsigned(flag, v, min, 24ULL * 3600 * 1000));
+    };
+  };
+  auto seconds = [](std::chrono::seconds& field) {
+    return [&field](const std::string& flag, const std::string& v) {
+      field = std::chrono::seconds(parse_unsigned(flag, v, 1, 30ULL * 24 * 3600));
     };
   };
   auto count = [](auto& field, std::uint64_t min, std::uint64_t max) {
@@ -103,7 +131,7 @@ std::optional<ServerConfig> parse_server_flags(const std::vector<std::string>& a
       field = static_cast<std::remove_reference_t<decltype(field)>>(parse_unsigned(flag, v, min, max));
     };
   };
-  const std::map<std::string, Setter> valued = {
+  return {
       {"host", [&](const std::string&, const std::string& v) { config.host = v; }},
       {"port", count(config.port, 0, 65535)},
       {"threads", count(config.worker_threads, 0, 1024)},
@@ -126,8 +154,22 @@ std::optional<ServerConfig> parse_server_flags(const std::vector<std::string>& a
       {"max-polynomials", count(config.max_polynomials, 1, 1'000'000)},
       {"json-max-depth", count(config.json_max_depth, 1, 4096)},
       {"shutdown-grace-ms", millis(config.shutdown_grace, 0)},
+      {"max-job-seconds", seconds(config.max_job_time)},
+      {"job-ttl", seconds(config.job_ttl)},
+      {"max-jobs-per-client", count(config.max_jobs_per_client, 1, 1'000'000)},
+      {"job-threads", count(config.job_threads, 1, 1024)},
+      {"job-lease-seconds", seconds(config.job_lease)},
+      {"client-ip-header", [&](const std::string&, const std::string& v) { config.client_ip_header = v; }},
+      {"store", [&](const std::string&, const std::string& v) { config.store = checked_store(v); }},
       {"cors-origins", [&](const std::string&, const std::string& v) { config.cors_origins = split_origins(v); }},
   };
+}
+
+}  // namespace
+
+std::optional<ServerConfig> parse_server_flags(const std::vector<std::string>& args) {
+  ServerConfig config;
+  const std::map<std::string, FlagSetter> valued = make_flag_setters(config);
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (arg.rfind("--", 0) != 0) throw UsageError("unexpected argument '" + arg + "'");

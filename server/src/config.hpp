@@ -57,6 +57,29 @@ struct ServerConfig {
   /// before it is cancelled.
   std::chrono::milliseconds shutdown_grace{5'000};
 
+  // ---- jobs (POST /v1/jobs) ------------------------------------------------
+  /// --max-job-seconds: a job's time limit (its request's timeout_ms may lower it).
+  std::chrono::seconds max_job_time{3600};
+  /// --job-ttl: how long a finished job's result is kept, in seconds.
+  std::chrono::seconds job_ttl{3600};
+  /// --max-jobs-per-client: jobs one client (peer address) may have queued or
+  /// running; one more gets 429 + Retry-After.
+  std::size_t max_jobs_per_client = 16;
+  /// --job-threads: threads running jobs, apart from the request workers.
+  unsigned job_threads = 1;
+  /// --store: where jobs are kept: `memory` (the default; lost on restart),
+  /// `sqlite:PATH` (`sqlite` alone: kDefaultSqlitePath) or `redis://HOST:PORT` (one
+  /// queue and result store for several replicas).
+  std::string store = "memory";
+  /// --client-ip-header: behind a proxy, the request header that names the client
+  /// (e.g. X-Real-IP), used for the per-client job cap instead of the peer address
+  /// (which is the proxy's). Empty (the default): the peer address; only set it when
+  /// every request comes through a proxy that sets the header, or clients could pick it.
+  std::string client_ip_header;
+  /// --job-lease-seconds: with a shared store, a running job whose replica has not
+  /// renewed its lease for this long (it died) is queued again for another replica.
+  std::chrono::seconds job_lease{15};
+
   // ---- browsers and logs ----------------------------------------------------
   /// --cors-origins: origins allowed to call the API from a browser; `*` (the
   /// default) allows any, an empty list none.
@@ -68,6 +91,9 @@ struct ServerConfig {
   /// The memory limit of one computation in bytes: max_memory_mb, or the derived default.
   std::size_t effective_max_memory_bytes() const;
 };
+
+/// The file `--store sqlite` uses: in the server's working directory.
+inline constexpr const char* kDefaultSqlitePath = "implicitizer-jobs.sqlite3";
 
 /// A command line the server cannot start with; main() prints it with the usage.
 class UsageError : public std::runtime_error {

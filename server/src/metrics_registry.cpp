@@ -138,6 +138,8 @@ std::string MetricsRegistry::render(const MetricsGauges& g) const {
   out << "implicitizer_cache_misses_total " << g.cache_misses << '\n';
   write_header(out, "implicitizer_cache_evictions_total", "counter", "Results dropped from the cache for room.");
   out << "implicitizer_cache_evictions_total " << g.cache_evictions << '\n';
+  write_header(out, "implicitizer_jobs_unfinished", "gauge", "Jobs queued or running (POST /v1/jobs).");
+  out << "implicitizer_jobs_unfinished " << g.jobs_unfinished << '\n';
   write_header(out, "implicitizer_cache_entries", "gauge", "Results held in the cache.");
   out << "implicitizer_cache_entries " << g.cache_entries << '\n';
   write_header(out, "implicitizer_cache_capacity", "gauge", "Most results the cache holds.");

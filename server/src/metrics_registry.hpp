@@ -38,6 +38,7 @@ struct MetricsGauges {
   std::uint64_t cache_hits = 0;        ///< lookups answered from the cache
   std::uint64_t cache_misses = 0;      ///< lookups that were not
   std::uint64_t cache_evictions = 0;   ///< results dropped for room
+  std::size_t jobs_unfinished = 0;     ///< jobs queued or running (POST /v1/jobs)
 };
 
 /// Thread-safe registry of the server's counters and histograms.

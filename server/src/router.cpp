@@ -3,24 +3,42 @@
 #include <algorithm>
 #include <utility>
 
+#include "computation_runner.hpp"
 #include "handlers/groebner.hpp"
 #include "handlers/healthz.hpp"
 #include "handlers/implicitize.hpp"
+#include "handlers/jobs.hpp"
 #include "handlers/metrics.hpp"
 #include "handlers/render.hpp"
 #include "handlers/resultant.hpp"
 #include "handlers/sdf.hpp"
 #include "handlers/static_files.hpp"
-#include "implicitizer/approximation/patch_approximation.hpp"
-#include "implicitizer/core/budget.hpp"
-#include "implicitizer/core/errors.hpp"
-#include "implicitizer/core/stopwatch.hpp"
 
 namespace implicitizer::server {
 
 bool Router::Route::accepts(http::verb method) const {
   if (method == http::verb::head) method = http::verb::get;
   return std::find(methods.begin(), methods.end(), method) != methods.end();
+}
+
+bool Router::Route::matches(std::string_view target, std::vector<std::string>& segments) const {
+  segments.clear();
+  std::string_view pattern = path;
+  while (!pattern.empty() && !target.empty()) {
+    const std::size_t p_end = std::min(pattern.find('/', 1), pattern.size());
+    const std::size_t t_end = std::min(target.find('/', 1), target.size());
+    const std::string_view want = pattern.substr(0, p_end);
+    const std::string_view got = target.substr(0, t_end);
+    if (want.size() > 2 && want[1] == '{') {
+      if (got.size() < 2) return false;  // "/" alone: an empty segment matches nothing
+      segments.emplace_back(got.substr(1));
+    } else if (want != got) {
+      return false;
+    }
+    pattern.remove_prefix(p_end);
+    target.remove_prefix(t_end);
+  }
+  return pattern.empty() && target.empty();
 }
 
 namespace {
@@ -33,58 +51,57 @@ std::string_view header_value(const Request& request, http::field field) {
   return {it->value().data(), it->value().size()};
 }
 
-ComputationOutcome classify(const std::exception_ptr& error) {
-  try {
-    std::rethrow_exception(error);
-  } catch (const InputError&) {
-    return ComputationOutcome::input_error;
-  } catch (const NoSingleEquation&) {
-    return ComputationOutcome::no_single_equation;
-  } catch (const ToleranceNotMet&) {
-    return ComputationOutcome::tolerance_not_met;
-  } catch (const LimitExceeded& e) {
-    switch (e.limit()) {
-      case Limit::time:
-        return ComputationOutcome::time_limit;
-      case Limit::memory:
-        return ComputationOutcome::memory_limit;
-      case Limit::cancelled:
-        return ComputationOutcome::cancelled;
-      case Limit::size:
-      case Limit::work:
-        return ComputationOutcome::size_limit;
-    }
-    return ComputationOutcome::failed;
-  } catch (const std::bad_alloc&) {
-    return ComputationOutcome::memory_limit;
-  } catch (...) {
-    return ComputationOutcome::failed;
-  }
-}
-
 }  // namespace
 
 Router::Router(HandlerContext context) : context_(std::move(context)), cors_(context_.config.cors_origins) {
   const HandlerContext& c = context_;
   auto answer_now = [](Response r) { return HandlerResult(std::move(r)); };
-  routes_.push_back({"/healthz", {http::verb::get}, "GET, HEAD, OPTIONS", [answer_now](const Request& r) {
-                       return answer_now(handle_healthz(r));
-                     }});
-  routes_.push_back({"/metrics", {http::verb::get}, "GET, HEAD, OPTIONS", [&c, answer_now](const Request& r) {
-                       return answer_now(handle_metrics(r, c));
-                     }});
-  routes_.push_back({"/v1/implicitize", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r) {
+  routes_.push_back(
+      {"/healthz", {http::verb::get}, "GET, HEAD, OPTIONS", [answer_now](const Request& r, const RouteCall&) {
+         return answer_now(handle_healthz(r));
+       }});
+  routes_.push_back(
+      {"/metrics", {http::verb::get}, "GET, HEAD, OPTIONS", [&c, answer_now](const Request& r, const RouteCall&) {
+         return answer_now(handle_metrics(r, c));
+       }});
+  routes_.push_back({"/v1/implicitize", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r, const RouteCall&) {
                        return handle_implicitize(r, c);
                      }});
-  routes_.push_back(
-      {"/v1/groebner", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r) { return handle_groebner(r, c); }});
-  routes_.push_back({"/v1/resultant", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r) {
+  routes_.push_back({"/v1/groebner", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r, const RouteCall&) {
+                       return handle_groebner(r, c);
+                     }});
+  routes_.push_back({"/v1/resultant", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r, const RouteCall&) {
                        return handle_resultant(r, c);
                      }});
+  routes_.push_back({"/v1/sdf", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r, const RouteCall&) {
+                       return handle_sdf(r, c);
+                     }});
+  routes_.push_back({"/v1/render", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r, const RouteCall&) {
+                       return handle_render(r, c);
+                     }});
+  add_job_routes();
+}
+
+void Router::add_job_routes() {
+  const HandlerContext& c = context_;
+  routes_.push_back({"/v1/jobs", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r, const RouteCall& call) {
+                       return handle_job_submit(r, call.peer, c);
+                     }});
+  routes_.push_back({"/v1/jobs/{id}",
+                     {http::verb::get, http::verb::delete_},
+                     "GET, HEAD, DELETE, OPTIONS",
+                     [&c](const Request& r, const RouteCall& call) {
+                       const std::string& id = call.segments.front();
+                       return r.method() == http::verb::delete_ ? handle_job_cancel(id, c) : handle_job_status(id, c);
+                     }});
   routes_.push_back(
-      {"/v1/sdf", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r) { return handle_sdf(r, c); }});
+      {"/v1/jobs/{id}/result", {http::verb::get}, "GET, HEAD, OPTIONS", [&c](const Request&, const RouteCall& call) {
+         return HandlerResult(handle_job_result(call.segments.front(), c));
+       }});
   routes_.push_back(
-      {"/v1/render", {http::verb::post}, "POST, OPTIONS", [&c](const Request& r) { return handle_render(r, c); }});
+      {"/v1/jobs/{id}/events", {http::verb::get}, "GET, HEAD, OPTIONS", [&c](const Request& r, const RouteCall& call) {
+         return handle_job_events(r, call.segments.front(), c);
+       }});
 }
 
 std::vector<RouteInfo> Router::routes() const {
@@ -93,7 +110,7 @@ std::vector<RouteInfo> Router::routes() const {
   return out;
 }
 
-Routed Router::route(const Request& request) const {
+Routed Router::route(const Request& request, std::string_view peer) const {
   const std::string_view target(request.target().data(), request.target().size());
   if (target.empty() || target.front() != '/') {
     return {"other", finish(request, make_error_response(http::status::bad_request, "invalid_path",
@@ -103,7 +120,16 @@ Routed Router::route(const Request& request) const {
   const std::string_view origin = header_value(request, http::field::origin);
   const bool preflight = request.method() == http::verb::options;
 
-  const auto route = std::find_if(routes_.begin(), routes_.end(), [&](const Route& r) { return r.path == path; });
+  // Behind a proxy the peer is the proxy: the configured header names the client.
+  std::string_view client = peer;
+  if (!context_.config.client_ip_header.empty()) {
+    if (const auto it = request.find(context_.config.client_ip_header); it != request.end()) {
+      client = std::string_view(it->value().data(), it->value().size());
+    }
+  }
+  RouteCall call{{}, std::string(client)};
+  const auto route =
+      std::find_if(routes_.begin(), routes_.end(), [&](const Route& r) { return r.matches(path, call.segments); });
   if (route != routes_.end()) {
     if (preflight) {
       Response response = origin.empty() ? make_response(http::status::no_content, "", "text/plain")
@@ -118,8 +144,9 @@ Routed Router::route(const Request& request) const {
       response.set(http::field::allow, route->allow);
       return {route->path, finish(request, std::move(response))};
     }
-    HandlerResult result = route->handle(request);
+    HandlerResult result = route->handle(request, call);
     if (auto* response = std::get_if<Response>(&result)) return {route->path, finish(request, std::move(*response))};
+    if (auto* stream = std::get_if<EventStream>(&result)) return {route->path, finish(request, std::move(*stream))};
     return {route->path, finish(request, route->path, std::get<Computation>(std::move(result)))};
   }
 
@@ -174,26 +201,21 @@ Response Router::finish(const Request& request, Response response) const {
   return response;
 }
 
+EventStream Router::finish(const Request& request, EventStream stream) const {
+  stream.head.version(request.version() == 10 ? 10 : 11);
+  // The body ends when the connection closes: nothing may follow it on this connection.
+  stream.head.keep_alive(false);
+  cors_.apply(header_value(request, http::field::origin), stream.head);
+  return stream;
+}
+
 Computation Router::finish(const Request& request, const std::string& endpoint, Computation computation) const {
   // The worker needs the request's header to finish the response, not its body
   // (which may be a megabyte): copy only the header.
   computation.run = [this, inner = std::move(computation.run), budget = computation.budget, endpoint,
                      head = Request(request.base())]() {
-    const Stopwatch timer;
-    Response response;
-    ComputationOutcome outcome = ComputationOutcome::ok;
-    try {
-      budget.check("the wait for a worker");  // timed out or cancelled while queued
-      // The worker's allocations, and those of the threads it starts, count against
-      // the budget's memory account.
-      response = compute_charging(budget, [&inner] { return inner(); });
-    } catch (...) {
-      outcome = classify(std::current_exception());
-      response = make_exception_response(std::current_exception());
-    }
-    const double seconds = timer.elapsed_seconds();
-    context_.metrics.record_computation(endpoint, outcome, seconds);
-    return finish(head, std::move(response));
+    ComputationRun done = run_computation(inner, budget, context_.metrics, endpoint);
+    return finish(head, std::move(done.response));
   };
   return computation;
 }

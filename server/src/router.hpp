@@ -19,14 +19,15 @@ struct Routed {
   /// The metrics label: the route's path, "static" or "other" (never a raw path, so
   /// that label cardinality stays bounded).
   std::string endpoint;
-  /// A finished response, or a computation whose `run` returns a finished response
-  /// and never throws (library errors are already mapped to the contract's errors).
-  std::variant<Response, Computation> result;
+  /// A finished response, a computation whose `run` returns a finished response
+  /// and never throws (library errors are already mapped to the contract's errors),
+  /// or an event stream whose head is finished.
+  HandlerResult result;
 };
 
 /// One API route, for docs checks and Allow headers.
 struct RouteInfo {
-  std::string path;     ///< exact path, e.g. "/v1/implicitize"
+  std::string path;     ///< the path, e.g. "/v1/implicitize"; `{id}` matches one segment
   std::string methods;  ///< the Allow header value, e.g. "POST, OPTIONS"
 };
 
@@ -40,10 +41,12 @@ class Router {
   Router(const Router&) = delete;
   Router& operator=(const Router&) = delete;
 
-  /// Routes `request`: 404 `not_found` for an unknown path, 405 `method_not_allowed`
-  /// with Allow for a known path and a wrong method, preflight answers for OPTIONS,
-  /// static files for other GET/HEAD paths when a static directory is configured.
-  Routed route(const Request& request) const;
+  /// Routes `request` from `peer` (the client's address, for per-client limits; with
+  /// --client-ip-header, that header's value when present): 404
+  /// `not_found` for an unknown path, 405 `method_not_allowed` with Allow for a known
+  /// path and a wrong method, preflight answers for OPTIONS, static files for other
+  /// GET/HEAD paths when a static directory is configured.
+  Routed route(const Request& request, std::string_view peer = {}) const;
 
   /// The 503 `overloaded` answer (with Retry-After) when the pool refuses `request`'s
   /// computation.
@@ -59,14 +62,23 @@ class Router {
   std::vector<RouteInfo> routes() const;
 
  private:
+  // What a handler learns besides the request: the path's `{...}` segments and the peer.
+  struct RouteCall {
+    std::vector<std::string> segments;
+    std::string peer;
+  };
   struct Route {
-    std::string path;
+    std::string path;                 // `{name}` segments match any one segment
     std::vector<http::verb> methods;  // HEAD is implied by GET
     std::string allow;                // the Allow header
-    std::function<HandlerResult(const Request&)> handle;
+    std::function<HandlerResult(const Request&, const RouteCall&)> handle;
     bool accepts(http::verb method) const;
+    // Whether `path` is this route's; fills `segments` with the `{...}` parts.
+    bool matches(std::string_view path, std::vector<std::string>& segments) const;
   };
+  void add_job_routes();
   Response finish(const Request& request, Response response) const;
+  EventStream finish(const Request& request, EventStream stream) const;
   Computation finish(const Request& request, const std::string& endpoint, Computation computation) const;
 
   HandlerContext context_;

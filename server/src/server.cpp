@@ -26,8 +26,11 @@ tcp::endpoint resolve_endpoint(net::io_context& io, const std::string& host, uns
 }
 
 HandlerContext make_handler_context(const ServerConfig& config, ResultCache& cache, MetricsRegistry& metrics,
-                                    const WorkerPool& pool) {
-  return HandlerContext{config, cache, metrics, [&cache, &pool] {
+                                    const WorkerPool& pool, JobManager& jobs, SharedResultCache* shared_cache) {
+  return HandlerContext{config,
+                        cache,
+                        metrics,
+                        [&cache, &pool, &jobs] {
                           MetricsGauges g;
                           g.queue_depth = pool.queued();
                           g.queue_capacity = pool.queue_capacity();
@@ -39,8 +42,11 @@ HandlerContext make_handler_context(const ServerConfig& config, ResultCache& cac
                           g.cache_hits = cache.hits();
                           g.cache_misses = cache.misses();
                           g.cache_evictions = cache.evictions();
+                          g.jobs_unfinished = jobs.unfinished();
                           return g;
-                        }};
+                        },
+                        &jobs,
+                        shared_cache};
 }
 
 // The part of Server::kStopAfterCancel kept for writing the last answers; the rest
@@ -60,7 +66,9 @@ Server::Server(ServerConfig config)
     : config_(checked(std::move(config))),
       cache_(config_.cache_capacity),
       pool_(config_.effective_worker_threads(), config_.queue_capacity),
-      router_(make_handler_context(config_, cache_, metrics_, pool_)),
+      shared_cache_(make_shared_result_cache(config_)),
+      jobs_(config_, make_job_store(config_), cache_, metrics_, shared_cache_.get()),
+      router_(make_handler_context(config_, cache_, metrics_, pool_, jobs_, shared_cache_.get())),
       log_(!config_.quiet),
       session_context_{config_, router_, pool_, metrics_, log_},
       io_(static_cast<int>(config_.io_threads)) {
@@ -76,17 +84,18 @@ void Server::stop() {
   if (stopped_) return;
   stopped_ = true;
   listener_->stop();
+  const std::size_t jobs_left = jobs_.stop(kStopAfterCancel - kLastWrites);
   // Workers finish or are cancelled; each posts its answer to its session's strand,
   // which the still-running network threads write.
-  const std::size_t unfinished = pool_.shutdown(config_.shutdown_grace, kStopAfterCancel - kLastWrites);
+  const std::size_t unfinished = pool_.shutdown(config_.shutdown_grace, kStopAfterCancel - kLastWrites) + jobs_left;
   // A short, bounded wait for those last writes; a client that does not read them
   // in this time loses them.
   std::this_thread::sleep_for(kLastWrites);
   if (unfinished > 0) {
     // One write, so that no access-log line of a network thread splits it.
-    std::cerr << "implicitizer-server: " + std::to_string(unfinished) + " computation" +
-                     (unfinished == 1 ? "" : "s") + " did not stop within " +
-                     std::to_string(kStopAfterCancel.count()) + " ms of being cancelled; exiting without them\n"
+    std::cerr << "implicitizer-server: " + std::to_string(unfinished) + " computation" + (unfinished == 1 ? "" : "s") +
+                     " did not stop within " + std::to_string(kStopAfterCancel.count()) +
+                     " ms of being cancelled; exiting without them\n"
               << std::flush;
     std::fflush(nullptr);
     std::_Exit(kExitComputationsDidNotStop);

@@ -11,6 +11,7 @@
 
 #include "access_log.hpp"
 #include "config.hpp"
+#include "jobs/job_manager.hpp"
 #include "listener.hpp"
 #include "metrics_registry.hpp"
 #include "result_cache.hpp"
@@ -38,7 +39,9 @@ class Server {
   /// The port bound (the system's choice when the config asked for 0).
   unsigned short port() const { return port_; }
 
-  /// Graceful shutdown: stops accepting, lets in-flight computations finish for the
+  /// Graceful shutdown: stops accepting, cancels the running jobs at once (a
+  /// persistent store queues them again at the next start: no grace would be long
+  /// enough for an hour's job), lets in-flight computations finish for the
   /// configured grace and cancels the rest, gives their answers a moment to be
   /// written, then stops the network threads. Idempotent. Returns within the grace
   /// plus kStopAfterCancel (and the time to join the network threads).
@@ -60,6 +63,8 @@ class Server {
   MetricsRegistry metrics_;
   ResultCache cache_;
   WorkerPool pool_;
+  std::unique_ptr<SharedResultCache> shared_cache_;  // null unless --store redis://
+  JobManager jobs_;
   Router router_;
   AccessLog log_;
   SessionContext session_context_;

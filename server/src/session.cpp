@@ -40,6 +40,9 @@ constexpr std::string_view kContinue = "HTTP/1.1 100 Continue\r\n\r\n";
 }  // namespace
 
 Session::Session(tcp::socket&& socket, const SessionContext& context) : stream_(std::move(socket)), context_(context) {
+  beast::error_code ec;
+  const tcp::endpoint remote = stream_.socket().remote_endpoint(ec);
+  if (!ec) peer_ = remote.address().to_string();
   context_.metrics.record_open();
 }
 
@@ -114,9 +117,10 @@ void Session::handle(Request request) {
   ++requests_;
   method_ = std::string(request.method_string());
   path_ = std::string(request.target());
-  Routed routed = context_.router.route(request);
+  Routed routed = context_.router.route(request, peer_);
   endpoint_ = std::move(routed.endpoint);
   if (auto* response = std::get_if<Response>(&routed.result)) return send(std::move(*response));
+  if (auto* stream = std::get_if<EventStream>(&routed.result)) return stream_events(std::move(*stream));
 
   Computation computation = std::get<Computation>(std::move(routed.result));
   budget_ = computation.budget;
@@ -183,6 +187,50 @@ void Session::on_write(beast::error_code ec, std::size_t bytes) {
   response_.reset();
   if (!keep_alive) return do_close();
   do_read();
+}
+
+void Session::stream_events(EventStream stream) {
+  events_.emplace(std::move(stream));
+  events_head_.emplace(events_->head);
+  event_bytes_ = 0;
+  stream_.expires_after(context_.config.write_timeout);
+  http::async_write_header(stream_, *events_head_,
+                           beast::bind_front_handler(&Session::on_events_head_written, shared_from_this()));
+}
+
+void Session::on_events_head_written(beast::error_code ec, std::size_t bytes) {
+  event_bytes_ += bytes;
+  if (ec) return log_request(events_->head.result_int(), event_bytes_);
+  wait_for_event();
+}
+
+void Session::wait_for_event() {
+  // No write is pending while the timer runs: the stream's timeout would close an
+  // idle but healthy stream, so it is armed per write only.
+  stream_.expires_never();
+  if (!events_timer_) events_timer_.emplace(stream_.get_executor());
+  events_timer_->expires_after(events_->interval);
+  events_timer_->async_wait(beast::bind_front_handler(&Session::on_event_due, shared_from_this()));
+}
+
+void Session::on_event_due(beast::error_code ec) {
+  if (ec) return;  // the timer was cancelled: the session is going away
+  auto [piece, last] = events_->next();
+  if (piece.empty() && !last) return wait_for_event();
+  event_ = std::move(piece);
+  last_event_ = last;
+  stream_.expires_after(context_.config.write_timeout);
+  net::async_write(stream_, net::buffer(event_),
+                   beast::bind_front_handler(&Session::on_event_written, shared_from_this()));
+}
+
+void Session::on_event_written(beast::error_code ec, std::size_t bytes) {
+  event_bytes_ += bytes;
+  // A write error is the listener gone (or too slow to read): the stream ends.
+  if (!ec && !last_event_) return wait_for_event();
+  context_.metrics.record_request(endpoint_, events_->head.result_int(), since_read_.elapsed_seconds());
+  log_request(events_->head.result_int(), event_bytes_);
+  if (!ec) do_close();
 }
 
 void Session::reject(http::status status, std::string_view code, std::string_view message) {

@@ -9,10 +9,13 @@
 /// `Expect: 100-continue` gets its interim `100 Continue` (or, when its declared body
 /// is too large, the 413 at once) before the client sends the body. While a computation runs the session waits for
 /// the socket to become readable: end of stream means the client left, and the
-/// computation's budget is cancelled.
+/// computation's budget is cancelled. An event stream (GET /v1/jobs/{id}/events) is
+/// written piece by piece, polled on a timer on this connection's strand, and ends the
+/// connection.
 
 #include <array>
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <memory>
@@ -61,6 +64,11 @@ class Session : public std::enable_shared_from_this<Session> {
   void on_computed(Response response);
   void send(Response response);
   void on_write(boost::beast::error_code ec, std::size_t bytes);
+  void stream_events(EventStream stream);
+  void on_events_head_written(boost::beast::error_code ec, std::size_t bytes);
+  void wait_for_event();
+  void on_event_due(boost::beast::error_code ec);
+  void on_event_written(boost::beast::error_code ec, std::size_t bytes);
   void reject(http::status status, std::string_view code, std::string_view message);
   void do_close();
   void drain();
@@ -83,6 +91,16 @@ class Session : public std::enable_shared_from_this<Session> {
   bool computing_ = false;
   bool client_gone_ = false;
   Budget budget_;
+
+  // The event stream being written, if any.
+  std::optional<EventStream> events_;
+  std::optional<http::response_serializer<http::string_body>> events_head_;
+  std::optional<boost::asio::steady_timer> events_timer_;
+  std::string event_;  // the piece being written
+  bool last_event_ = false;
+  std::size_t event_bytes_ = 0;
+
+  std::string peer_;  // the client's address, for per-client limits
 
   std::array<char, 4096> drain_buffer_{};
   std::size_t drained_ = 0;

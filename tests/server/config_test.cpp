@@ -56,6 +56,37 @@ TEST(ServerFlags, MemoryAndCountLimits) {
   EXPECT_THROW(parse_server_flags({"--max-polynomials", "0"}), UsageError);
 }
 
+TEST(ServerFlags, JobFlags) {
+  const auto defaults = parse_server_flags({});
+  ASSERT_TRUE(defaults);
+  EXPECT_EQ(defaults->max_job_time.count(), 3600);
+  EXPECT_EQ(defaults->job_ttl.count(), 3600);
+  EXPECT_EQ(defaults->max_jobs_per_client, 16u);
+  EXPECT_EQ(defaults->job_threads, 1u);
+  EXPECT_EQ(defaults->store, "memory");
+  EXPECT_EQ(defaults->job_lease.count(), 15);
+  EXPECT_EQ(defaults->client_ip_header, "");
+
+  const auto config =
+      parse_server_flags({"--max-job-seconds", "7200", "--job-ttl=60", "--max-jobs-per-client", "2", "--job-threads",
+                          "3", "--job-lease-seconds", "5", "--client-ip-header", "X-Real-IP", "--store", "sqlite"});
+  ASSERT_TRUE(config);
+  EXPECT_EQ(config->max_job_time.count(), 7200);
+  EXPECT_EQ(config->job_ttl.count(), 60);
+  EXPECT_EQ(config->max_jobs_per_client, 2u);
+  EXPECT_EQ(config->job_threads, 3u);
+  EXPECT_EQ(config->job_lease.count(), 5);
+  EXPECT_EQ(config->client_ip_header, "X-Real-IP");
+  EXPECT_EQ(config->store, std::string("sqlite:") + kDefaultSqlitePath);
+  EXPECT_EQ(parse_server_flags({"--store", "sqlite:/tmp/j.db"})->store, "sqlite:/tmp/j.db");
+  EXPECT_EQ(parse_server_flags({"--store", "redis://10.0.0.5:6379"})->store, "redis://10.0.0.5:6379");
+  for (const char* bad : {"redis", "redis://host", "redis://host:0", "redis://:6379", "sqlite:", "postgres://x:1"}) {
+    EXPECT_THROW(parse_server_flags({"--store", bad}), UsageError) << bad;
+  }
+  EXPECT_THROW(parse_server_flags({"--max-job-seconds", "0"}), UsageError);
+  EXPECT_THROW(parse_server_flags({"--job-threads", "0"}), UsageError);
+}
+
 TEST(ServerFlags, HelpReturnsNothing) { EXPECT_FALSE(parse_server_flags({"--help"})); }
 
 TEST(ServerFlags, RefusesBadFlagsAndValues) {

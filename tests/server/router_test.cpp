@@ -2,9 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <memory>
 #include <optional>
+#include <thread>
 #include <utility>
 #include <vector>
+
+#include "jobs/job_manager.hpp"
+#include "jobs/memory_job_store.hpp"
 
 namespace implicitizer::server {
 namespace {
@@ -234,7 +240,82 @@ TEST_F(RouterTest, KnowsItsRoutes) {
   std::vector<std::string> paths;
   for (const RouteInfo& route : router_.routes()) paths.push_back(route.path);
   EXPECT_EQ(paths, (std::vector<std::string>{"/healthz", "/metrics", "/v1/implicitize", "/v1/groebner", "/v1/resultant",
-                                             "/v1/sdf", "/v1/render"}));
+                                             "/v1/sdf", "/v1/render", "/v1/jobs", "/v1/jobs/{id}",
+                                             "/v1/jobs/{id}/result", "/v1/jobs/{id}/events"}));
+}
+
+TEST_F(RouterTest, JobPathsTakeOneSegmentForTheirId) {
+  // No JobManager here: a job path that matches answers "no jobs", one that does not is unknown.
+  for (const char* path : {"/v1/jobs/abc", "/v1/jobs/abc/result", "/v1/jobs/abc/events"}) {
+    const Response response = answer(get(path));
+    EXPECT_EQ(response.result(), http::status::not_found) << path;
+    EXPECT_NE(response.body().find("runs no jobs"), std::string::npos) << path << response.body();
+  }
+  for (const char* path : {"/v1/jobs/", "/v1/jobs//result", "/v1/jobs/abc/def", "/v1/jobs/abc/result/x"}) {
+    const Response response = answer(get(path));
+    EXPECT_EQ(response.result(), http::status::not_found) << path;
+    EXPECT_NE(response.body().find("no such endpoint"), std::string::npos) << path << response.body();
+  }
+  Request put = get("/v1/jobs/abc");
+  put.method(http::verb::put);
+  const Response refused = answer(put);
+  EXPECT_EQ(refused.result(), http::status::method_not_allowed);
+  EXPECT_EQ(refused[http::field::allow], "GET, HEAD, DELETE, OPTIONS");
+}
+
+// The router with a JobManager over the memory store: the jobs API without sockets.
+class RouterJobsTest : public RouterTest {
+ protected:
+  std::string submit(const std::string& body) {
+    const Response response = answer(post("/v1/jobs", body));
+    EXPECT_EQ(response.result(), http::status::accepted) << response.body();
+    const std::size_t at = response.body().find(R"("id":")");
+    return at == std::string::npos ? std::string() : response.body().substr(at + 6, 32);
+  }
+  // Polls GET /v1/jobs/{id} until its body holds `text` (generous deadline).
+  Response wait_for(const std::string& id, const std::string& text) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    Response response;
+    do {
+      response = answer(get("/v1/jobs/" + id));
+      if (response.body().find(text) != std::string::npos) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    } while (std::chrono::steady_clock::now() < deadline);
+    return response;
+  }
+
+  JobManager jobs_{config_, std::make_unique<MemoryJobStore>(), cache_, metrics_};
+  Router jobs_router_{HandlerContext{config_, cache_, metrics_, {}, &jobs_}};
+  Response answer(const Request& request) {
+    Routed routed = jobs_router_.route(request, "192.0.2.1");
+    if (auto* response = std::get_if<Response>(&routed.result)) return std::move(*response);
+    return Response(http::status::internal_server_error, 11);  // no computation or stream expected here
+  }
+};
+
+TEST_F(RouterJobsTest, SubmitPollResult) {
+  const std::string id =
+      submit(R"({"kind": "groebner", "request": {"polynomials": ["x^2+y^2-1", "x-y"], "order": "lex"}})");
+  const Response done = wait_for(id, R"("status":"done")");
+  EXPECT_NE(done.body().find(R"("result":{"basis":["y^2-1/2","x-y"])"), std::string::npos) << done.body();
+  const Response result = answer(get("/v1/jobs/" + id + "/result"));
+  EXPECT_EQ(result.result(), http::status::ok);
+  EXPECT_EQ(result.body().find(R"({"basis":["y^2-1/2","x-y"])"), 0U) << result.body();
+  EXPECT_EQ(result["X-Cache"], "miss");
+}
+
+TEST_F(RouterJobsTest, EventsAreAStream) {
+  const std::string id =
+      submit(R"({"kind": "resultant", "request": {"polynomials": ["x-t", "y-t^2"], "variable": "t"}})");
+  wait_for(id, R"("status":"done")");
+  Routed routed = jobs_router_.route(get("/v1/jobs/" + id + "/events"), "192.0.2.1");
+  auto* stream = std::get_if<EventStream>(&routed.result);
+  ASSERT_NE(stream, nullptr);
+  EXPECT_EQ(stream->head[http::field::content_type], "text/event-stream");
+  EXPECT_FALSE(stream->head.keep_alive()) << "the stream's body ends with the connection";
+  const auto [text, last] = stream->next();
+  EXPECT_TRUE(last);
+  EXPECT_EQ(text.rfind("event: end\ndata: {", 0), 0U) << text;
 }
 
 TEST_F(RouterTest, RenderRunsOnThePoolAndAnswersPng) {

@@ -40,6 +40,25 @@ class Checks:
         return "%d passed, %d failed" % (self.count - len(self.failures), len(self.failures))
 
 
+def run_tests(checks, tests):
+    """Runs each test (a callable); an exception fails that test, and the others still run."""
+    import traceback
+    for test in tests:
+        try:
+            test()
+        except Exception:  # noqa: BLE001 - a crash of one test is a failure, the others still run
+            checks.failures.append(traceback.format_exc())
+            print("FAIL (exception):", traceback.format_exc())
+
+
+def close_showing_log(server, checks):
+    """Closes `server`, first printing its log's tail when a check has failed."""
+    if checks.failures:
+        print("---- server log (tail) ----")
+        print(server.log_text()[-3000:])
+    server.close()
+
+
 def error_code(body):
     """The `error.code` of a JSON error body, or None."""
     try:

@@ -5,7 +5,7 @@
 
 namespace implicitizer {
 
-Budget::Budget() : cancelled_(std::make_shared<std::atomic<bool>>(false)) {}
+Budget::Budget() : shared_(std::make_shared<Shared>()) {}
 
 Budget Budget::with_timeout(double seconds) {
   Budget b;

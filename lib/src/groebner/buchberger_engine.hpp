@@ -55,6 +55,9 @@ class BuchbergerEngine {
     while (queue_.pop(basis_.entries(), pair)) {
       params_.budget.check("Buchberger's algorithm");
       ++stats_.reductions;
+      // Pairs done of those known so far: the total grows as new elements form pairs.
+      params_.budget.report_step("Buchberger's algorithm (S-pairs)", stats_.reductions,
+                                 stats_.reductions + queue_.pairs_left());
       stats_.max_degree = std::max(stats_.max_degree, pair.lcm_degree);
       Poly s = arithmetic_.s_polynomial(basis_.polynomials()[pair.i], basis_.polynomials()[pair.j]);
       std::int32_t sugar = pair.sugar;

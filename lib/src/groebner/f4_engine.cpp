@@ -73,6 +73,8 @@ class F4Engine {
   // One F4 step on the selected pairs; true when it found the unit ideal.
   bool reduce_selected(const std::vector<SPair>& selected) {
     params_.budget.check("F4");
+    // Pairs selected so far of those known: the total grows as new elements form pairs.
+    params_.budget.report_step("F4 (S-pairs)", stats_.reductions, stats_.reductions + queue_.pairs_left());
     std::vector<SelectedPair> pairs;
     std::int32_t sugar = 0;
     for (const SPair& p : selected) {

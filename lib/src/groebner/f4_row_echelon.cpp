@@ -70,7 +70,10 @@ EchelonResult reduce_to_row_echelon(const MacaulayMatrix& matrix, const nmod_t& 
   std::vector<std::uint64_t> acc(matrix.columns, 0);
   const bool delayed = modulus.n < (std::uint64_t{1} << 31);
   for (std::size_t k = 0; k < matrix.to_reduce.size(); ++k) {
-    if (k % kRowsPerCheck == 0) budget.check(kWhere);
+    if (k % kRowsPerCheck == 0) {
+      budget.check(kWhere);
+      budget.report_step(kWhere, k, matrix.to_reduce.size());
+    }
     const MatrixRow& row = matrix.to_reduce[k];
     for (std::size_t i = 0; i < row.size(); ++i) acc[row.columns[i]] = row.coefficients[i];
     MatrixRow out;

@@ -402,6 +402,8 @@ class ModularDriver {
         }
         ++stats_.primes;
         stats_.last_prime = r.stats;
+        // How many primes the lift needs is known only when reconstruction succeeds.
+        params_.buchberger.budget.report_stage("modular Groebner basis (primes)", stats_.primes, 0);
         batch.push_back(std::move(r));
       }
     }

@@ -49,6 +49,9 @@ class SPairQueue {
   // criteria (Buchberger's second criterion) discard. False when none is left.
   bool pop(const std::vector<BasisEntry>& basis, SPair& out);
 
+  // Pairs still queued that no criterion has discarded yet (the progress of a run).
+  std::size_t pairs_left() const { return alive_; }
+
  private:
   bool before(const SPair& a, const SPair& b) const;  // a is selected before b
   SPair make_pair(const std::vector<BasisEntry>& basis, std::size_t i, std::size_t t);

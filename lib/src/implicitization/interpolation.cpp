@@ -88,6 +88,8 @@ class InterpolationDriver {
         const double at_bound = monomial_count(n, d_max);
         if (at_bound <= max_columns && (2 * here > at_bound || at_bound <= kDirectColumns)) degree = d_max;
       }
+      // The degree bound is known: how far up the search is, for a watcher.
+      options_.budget.report_stage("interpolation (degree tried of the degree bound)", degree, d_max);
       const double columns = monomial_count(n, degree);
       // The equation has at most one term per column: the budget's size limit applies.
       if (columns <= max_columns) options_.budget.check_terms(static_cast<std::size_t>(columns), "interpolation");
@@ -163,6 +165,8 @@ class InterpolationDriver {
       throw LimitExceeded(Limit::size,
                           "interpolation: more than " + std::to_string(options_.max_primes) + " primes needed");
     }
+    // How many primes the lift needs is known only when it stabilizes.
+    options_.budget.report_step("interpolation (primes)", taken_, 0);
     std::vector<KernelImage> images(threads);
     run_one_per_thread(threads, [&](std::size_t i) {
       images[i] = kernel_modulo(forms_, basis, batch[i], options_.seed, options_.budget);

@@ -369,9 +369,13 @@ Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, c
       if (options.proven_bits > 0) {
         done = stats.modulus_bits > options.proven_bits + 1;
         stats.proven = done;
+        // The bound fixes the primes needed: report the bits of the modulus so far.
+        options.budget.report_stage("determinant (modulus bits of the proven bound)", stats.modulus_bits,
+                                    options.proven_bits + 2);
       } else {
         stable = changed ? 0 : stable + 1;
         done = stable >= options.stable_primes;
+        options.budget.report_stage("determinant (primes)", stats.primes, 0);
       }
     }
     if (!done && stats.primes + stats.unlucky_primes >= options.max_primes) {

@@ -5,10 +5,12 @@
 /// at once, or hands back a Computation that the session runs on the worker pool,
 /// since no algebra may run on a network thread.
 
+#include <chrono>
 #include <functional>
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -19,6 +21,7 @@
 #include "implicitizer/core/errors.hpp"
 #include "metrics_registry.hpp"
 #include "result_cache.hpp"
+#include "shared_result_cache.hpp"
 
 namespace implicitizer::server {
 
@@ -30,8 +33,21 @@ struct Computation {
   Budget budget;
 };
 
-/// A handler's answer: a response now, or a computation for the pool.
-using HandlerResult = std::variant<Response, Computation>;
+/// A response written as it is produced (Server-Sent Events): `head` first (status
+/// and headers, no length: the body ends when the connection closes), then, every
+/// `interval`, whatever `next()` returns, until it says that was the last piece.
+/// `next` runs on the connection's network thread: it must be quick.
+struct EventStream {
+  Response head;
+  std::chrono::milliseconds interval{250};
+  /// The next bytes to write ("" for nothing yet) and whether the stream ends after them.
+  std::function<std::pair<std::string, bool>()> next;
+};
+
+/// A handler's answer: a response now, a computation for the pool, or a stream.
+using HandlerResult = std::variant<Response, Computation, EventStream>;
+
+class JobManager;
 
 /// The shared state handlers may use. Outlives every request.
 struct HandlerContext {
@@ -40,6 +56,10 @@ struct HandlerContext {
   MetricsRegistry& metrics;
   /// Reads the pool's and the cache's gauges for /metrics.
   std::function<MetricsGauges()> gauges;
+  /// The jobs API's engine (null: the /v1/jobs routes answer 404).
+  JobManager* jobs = nullptr;
+  /// The result cache shared with other replicas (null: none; --store redis://).
+  SharedResultCache* shared_cache = nullptr;
 };
 
 /// Cache keys: appends `value` length-prefixed, so that no two field sequences
@@ -95,9 +115,11 @@ HandlerResult handle_decoded(const Request& request, const HandlerContext& conte
 }
 
 /// The shape every cached algebra endpoint shares: the cached body for `key` if there
-/// is one (`X-Cache: hit`), else a Computation that runs `answer(decoded, budget)` on
-/// a worker under a budget for the request's timeout, caches the body it returns and
-/// answers it (`X-Cache: miss`). `answer` returns the encoded JSON body.
+/// is one (`X-Cache: hit`), else a Computation that, on a worker, looks in the shared
+/// cache (a hit there is `X-Cache: hit` too, and is kept in this replica's cache), else
+/// runs `answer(decoded, budget)` under a budget for the request's timeout, caches the
+/// body it returns in both and answers it (`X-Cache: miss`). `answer` returns the
+/// encoded JSON body.
 template <typename Request, typename Answer>
 HandlerResult cached_computation(Request decoded, std::string key, const HandlerContext& context, Answer answer) {
   if (const auto body = context.cache.find(key)) {
@@ -111,11 +133,17 @@ HandlerResult cached_computation(Request decoded, std::string key, const Handler
   // a timeout left in the request would restart it when the worker begins.
   decoded.timeout_seconds.reset();
   computation.run = [decoded = std::move(decoded), key = std::move(key), budget = computation.budget,
-                     cache = &context.cache, answer = std::move(answer)]() {
-    std::string body = answer(decoded, budget);
-    cache->insert(key, body);
-    Response response = make_json_response(http::status::ok, std::move(body));
-    response.set("X-Cache", "miss");
+                     cache = &context.cache, shared = context.shared_cache, answer = std::move(answer)]() {
+    std::optional<std::string> body;
+    if (shared != nullptr) body = shared->find(key);
+    const bool hit = body.has_value();
+    if (!hit) {
+      body = answer(decoded, budget);
+      if (shared != nullptr) shared->insert(key, *body);
+    }
+    cache->insert(key, *body);
+    Response response = make_json_response(http::status::ok, std::move(*body));
+    response.set("X-Cache", hit ? "hit" : "miss");
     return response;
   };
   return computation;

@@ -15,11 +15,12 @@
 
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/core/memory_account.hpp"
+#include "implicitizer/core/progress.hpp"
 
 namespace implicitizer {
 
-/// Limits of one computation. Copies share the cancellation flag, the memory account
-/// and the work counter, so a server can cancel work it handed to another thread and
+/// Limits of one computation. Copies share the cancellation flag, the progress sink,
+/// the memory account and the work counter, so a server can cancel work it handed to another thread and
 /// every thread of one computation draws on one allowance.
 class Budget {
  public:
@@ -82,9 +83,9 @@ class Budget {
   void check_polynomials(std::size_t count, const char* what) const;
 
   /// Asks every holder of this budget (or a copy) to stop at its next check.
-  void cancel() const { cancelled_->store(true, std::memory_order_relaxed); }
+  void cancel() const { shared_->cancelled.store(true, std::memory_order_relaxed); }
   /// Whether cancel() was called.
-  bool is_cancelled() const { return cancelled_->load(std::memory_order_relaxed); }
+  bool is_cancelled() const { return shared_->cancelled.load(std::memory_order_relaxed); }
 
   /// Throws LimitExceeded (cancelled, memory or time) naming `where` if the budget is
   /// spent. Cheap: two relaxed loads and one clock read.
@@ -102,6 +103,19 @@ class Budget {
   /// Seconds left before the deadline (infinity when there is none).
   double seconds_left() const;
 
+  /// The progress sink every copy of this budget shares: what the long loops last
+  /// reported (core/progress.hpp). Never null.
+  const ProgressSink& progress() const { return shared_->progress; }
+  /// Reports an inner loop's `done` of `total` units (total 0: unknown) under `phase`,
+  /// a string literal. Three relaxed stores.
+  void report_step(const char* phase, std::uint64_t done, std::uint64_t total) const {
+    shared_->progress.report_step(phase, done, total);
+  }
+  /// Reports an outer loop's `done` of `total` (0: unknown) under `phase`, a string literal.
+  void report_stage(const char* phase, std::uint64_t done, std::uint64_t total) const {
+    shared_->progress.report_stage(phase, done, total);
+  }
+
  private:
   bool has_deadline_ = false;
   Clock::time_point deadline_{};
@@ -112,7 +126,13 @@ class Budget {
   std::uint64_t max_work_ = 0;
   std::shared_ptr<std::atomic<std::uint64_t>> work_;  // null without an allowance
   std::shared_ptr<MemoryAccount> memory_;             // null without a memory limit
-  std::shared_ptr<std::atomic<bool>> cancelled_;
+  // What every copy shares from construction on, in one allocation: whoever holds any
+  // copy (a server's job) can cancel the computation and watch its progress.
+  struct Shared {
+    std::atomic<bool> cancelled{false};
+    ProgressSink progress;
+  };
+  std::shared_ptr<Shared> shared_;
 };
 
 /// Runs `compute()` with the calling thread charging `budget`'s memory account

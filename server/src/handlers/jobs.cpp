@@ -1,0 +1,76 @@
+#include "handlers/jobs.hpp"
+
+#include <memory>
+
+#include "jobs/job_event_feed.hpp"
+#include "jobs/job_manager.hpp"
+
+namespace implicitizer::server {
+
+namespace {
+
+Response make_job_not_found(const std::string& id) {
+  return make_error_response(http::status::not_found, "job_not_found", "no job " + id + " (unknown or expired)");
+}
+
+Response make_jobs_disabled() {
+  return make_error_response(http::status::not_found, "not_found", "this server runs no jobs");
+}
+
+// A store that cannot answer (Redis down, a disk error) is the server's trouble, not
+// the request's: 503, and the connection's thread goes on.
+template <typename Answer>
+HandlerResult answer_with_store(const HandlerContext& context, Answer answer) {
+  if (context.jobs == nullptr) return make_jobs_disabled();
+  try {
+    return answer(*context.jobs);
+  } catch (const std::exception& e) {
+    Response response = make_error_response(http::status::service_unavailable, "job_store_unavailable",
+                                            std::string("the job store cannot answer: ") + e.what());
+    response.set(http::field::retry_after, std::to_string(context.config.retry_after_seconds));
+    return response;
+  }
+}
+
+}  // namespace
+
+HandlerResult handle_job_submit(const Request& request, const std::string& client, const HandlerContext& context) {
+  return answer_with_store(context, [&](JobManager& jobs) { return jobs.submit(request, client); });
+}
+
+HandlerResult handle_job_status(const std::string& id, const HandlerContext& context) {
+  return answer_with_store(context, [&](JobManager& jobs) {
+    const std::optional<JobView> view = jobs.view(id);
+    if (!view) return make_job_not_found(id);
+    return make_json_response(http::status::ok, encode_job(*view));
+  });
+}
+
+HandlerResult handle_job_result(const std::string& id, const HandlerContext& context) {
+  return answer_with_store(context, [&](JobManager& jobs) { return jobs.result(id); });
+}
+
+HandlerResult handle_job_cancel(const std::string& id, const HandlerContext& context) {
+  return answer_with_store(context, [&](JobManager& jobs) { return jobs.cancel(id); });
+}
+
+HandlerResult handle_job_events(const Request& request, const std::string& id, const HandlerContext& context) {
+  return answer_with_store(context, [&](JobManager& jobs) -> HandlerResult {
+    if (!jobs.view(id)) return make_job_not_found(id);
+    EventStream stream;
+    stream.head = Response(http::status::ok, 11);
+    stream.head.set(http::field::content_type, "text/event-stream");
+    stream.head.set(http::field::cache_control, "no-cache");
+    stream.head.set(http::field::server, "implicitizer");
+    // nginx buffers proxied bodies unless told not to; events must arrive as they are sent.
+    stream.head.set("X-Accel-Buffering", "no");
+    if (request.method() == http::verb::head) return stream.head;
+    // Bounded: a stream outlives neither its job's queueing and running nor this.
+    const auto max_duration = 2 * context.config.max_job_time;
+    auto feed = std::make_shared<JobEventFeed>(jobs, id, max_duration);
+    stream.next = [feed] { return feed->next(); };
+    return stream;
+  });
+}
+
+}  // namespace implicitizer::server
