@@ -54,11 +54,17 @@ std::string box_overshoot(const Vec3<float>& lo, const Vec3<float>& hi, const st
          format_glsl_float(float(clamp)) + ")";
 }
 
+// B(p) in GLSL, scaled by `factor` (kShrink, and for the culling test kHullShrink too).
+std::string box_bound_glsl(const Vec3<float>& lo, const Vec3<float>& hi, const std::string& p, double clamp,
+                           float factor) {
+  const std::string m = box_overshoot(lo, hi, p, clamp);
+  return "sqrt(dot(" + m + ", " + m + ")) * " + format_glsl_float(factor);
+}
+
 }  // namespace
 
 std::string PolytopeTrim::hull_glsl(const std::string& p) const {
-  const std::string m = box_overshoot(lo_, hi_, p, kClamp);
-  return "sqrt(dot(" + m + ", " + m + ")) * " + format_glsl_float(float(kShrink));
+  return box_bound_glsl(lo_, hi_, p, kClamp, float(kShrink) * float(PatchCover::kHullShrink));
 }
 
 std::string PolytopeTrim::to_glsl(const std::string& function) const {
@@ -85,7 +91,7 @@ std::string PolytopeTrim::to_glsl(const std::string& function) const {
   out += "  float t = (" + largest + " - " + format_glsl_float(float(kSlack)) +
          " * (abs(u.x) + abs(u.y) + abs(u.z) + " + format_glsl_float(largest_offset_) + ")) * " +
          format_glsl_float(float(kShrink)) + ";\n";
-  out += "  return max(abs(d), max(t, " + hull_glsl("p") + "));\n";
+  out += "  return max(abs(d), max(t, " + box_bound_glsl(lo_, hi_, "p", kClamp, float(kShrink)) + "));\n";
   out += "}\n";
   return out;
 }

@@ -25,6 +25,7 @@
 
 #include "implicitizer/approximation/trim_polytope.hpp"
 #include "implicitizer/implicitization/patch_bounds.hpp"
+#include "implicitizer/scene/patch_cover.hpp"
 #include "implicitizer/scene/vec3.hpp"
 
 namespace implicitizer {
@@ -39,19 +40,16 @@ class PolytopeTrim {
   /// max(|d|, P(p), B(p)) (the file comment), in T's arithmetic (float: the GLSL's).
   template <typename T>
   T distance_lower_bound(const Vec3<T>& p, T d) const {
-    return std::max(std::abs(d), std::max(polytope_bound(p), hull_distance_lower_bound(p)));
+    return std::max(std::abs(d), std::max(polytope_bound(p), box_bound(p, T(kShrink))));
   }
 
-  /// B(p): a lower bound of the distance to the box, so of distance_lower_bound(p, d)
-  /// for every d (what lets a union skip a piece whose box is no nearer than the best
-  /// value so far).
+  /// A lower bound of distance_lower_bound(p, d) for every d: B(p) shrunk by a further
+  /// PatchCover::kHullShrink, which covers a GPU evaluating the culling test and the
+  /// trimming's own B differently (a fused multiply-add). What lets a union skip a
+  /// piece whose box is no nearer than the best value so far.
   template <typename T>
   T hull_distance_lower_bound(const Vec3<T>& p) const {
-    const Vec3<T> lo = cast<T>(lo_), hi = cast<T>(hi_);
-    const Vec3<T> q{std::max(lo.x - p.x, p.x - hi.x), std::max(lo.y - p.y, p.y - hi.y),
-                    std::max(lo.z - p.z, p.z - hi.z)};
-    const Vec3<T> m = min(max(q, T(0)), T(kClamp));
-    return std::sqrt(m.x * m.x + m.y * m.y + m.z * m.z) * T(kShrink);
+    return box_bound(p, T(kShrink) * T(PatchCover::kHullShrink));
   }
 
   /// The GLSL expression of hull_distance_lower_bound<float>(`p`), `p` a vec3
@@ -82,6 +80,16 @@ class PolytopeTrim {
   template <typename T>
   static Vec3<T> cast(const Vec3<float>& v) {
     return {T(v.x), T(v.y), T(v.z)};
+  }
+
+  // The distance to the box times `factor` (B(p) for kShrink: rounded down).
+  template <typename T>
+  T box_bound(const Vec3<T>& p, T factor) const {
+    const Vec3<T> lo = cast<T>(lo_), hi = cast<T>(hi_);
+    const Vec3<T> q{std::max(lo.x - p.x, p.x - hi.x), std::max(lo.y - p.y, p.y - hi.y),
+                    std::max(lo.z - p.z, p.z - hi.z)};
+    const Vec3<T> m = min(max(q, T(0)), T(kClamp));
+    return std::sqrt(m.x * m.x + m.y * m.y + m.z * m.z) * factor;
   }
 
   template <typename T>
