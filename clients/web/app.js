@@ -342,6 +342,7 @@ function showJobProgress(busy, job, feed) {
   data.jobFeed = feed;
   data.jobUpdates = String(updates);
   ui.progressPhase.textContent = describeJobProgress(job);
+  ui.progressPhase.title = ui.progressPhase.textContent; // whole, where the column cuts it
   const fraction = job.progress?.fraction;
   if (Number.isFinite(fraction)) ui.jobBar.value = fraction;
   else ui.jobBar.removeAttribute('value'); // indeterminate: the loop does not know its total
@@ -364,6 +365,7 @@ function hideJobProgress() {
   ui.jobBar.hidden = true;
   ui.jobBar.removeAttribute('value');
   ui.progressPhase.textContent = '';
+  ui.progressPhase.title = '';
 }
 
 ui.cancel.addEventListener('click', () => state.busy && state.busy.controller.abort());
