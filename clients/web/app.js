@@ -5,15 +5,16 @@
 //
 // The computations run as jobs (jobs.js, POST /v1/jobs): implicitize, the surface's
 // sdf and the CPU render. Each of them can take from milliseconds to minutes on input
-// the page cannot judge beforehand (tp_44 implicitizes in tens of seconds, an sdf of a
-// patch implicitizes it again and may approximate it, a CPU render of a heavy safe
-// mode takes most of a minute), so all of them take the same road: one code path, a
-// progress bar fed by the job's events, and a Cancel that deletes the job on the
-// server. A short job costs a submission and its first event (the server looks 4
-// times a second) more than a plain POST, which the page can afford. Only the sheet's
-// side function stays a plain POST /v1/sdf: a fast-mode distance function of an
-// equation already computed, quick whatever the surface, which as a job would queue
-// behind other clients' long jobs (--job-threads) for nothing.
+// the page cannot judge beforehand (the hard surfaces of shared/bench implicitize for
+// many seconds, an sdf of a patch implicitizes it again and may approximate it, a CPU
+// render of a heavy safe mode is slow on a busy server), so all of them take the same
+// road: one code path, a progress bar fed by the job's events, and a Cancel that
+// deletes the job on the server. A short job costs a submission and its first event
+// (the server's event poll, docs/api.md "Jobs") more than a plain POST, which the page
+// can afford against a second code path. Only the sheet's side function stays a plain
+// POST /v1/sdf: a fast-mode distance function of an equation already computed, quick
+// whatever the surface, which as a job would queue behind other clients' long jobs
+// (--job-threads) for nothing.
 import { ApiError, apiHost, checkHealth, implicitizeRequest, postJson, sdfRequest } from './api.js';
 import { fillExamplesMenu, loadExamples } from './examples.js';
 import { runJob } from './jobs.js';
