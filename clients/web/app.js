@@ -1,11 +1,23 @@
-// The page: inputs → POST /v1/implicitize → the equation and its scripts → POST
-// /v1/sdf (the parametric surface itself, over its domain: the patch, in the shape the
-// server picks) → the live preview (preview.js: sheets two-sided, curves flat). Errors are shown beside the input they
-// concern, with the server's position marked; long requests show their elapsed time
-// and can be cancelled (the fetch is aborted, and the server cancels the computation
-// of a client that disconnects).
-import { ApiError, apiHost, checkHealth, implicitize, renderPng, sdf } from './api.js';
+// The page: inputs → implicitize → the equation and its scripts → sdf (the parametric
+// surface itself, over its domain: the patch, in the shape the server picks) → the
+// live preview (preview.js: sheets two-sided, curves flat). Errors are shown beside
+// the input they concern, with the server's position marked.
+//
+// The computations run as jobs (jobs.js, POST /v1/jobs): implicitize, the surface's
+// sdf and the CPU render. Each of them can take from milliseconds to minutes on input
+// the page cannot judge beforehand (the hard surfaces of shared/bench implicitize for
+// many seconds, an sdf of a patch implicitizes it again and may approximate it, a CPU
+// render of a heavy safe mode is slow on a busy server), so all of them take the same
+// road: one code path, a progress bar fed by the job's events, and a Cancel that
+// deletes the job on the server. A short job costs a submission and its first event
+// (the server's event poll, docs/api.md "Jobs") more than a plain POST, which the page
+// can afford against a second code path. Only the sheet's side function stays a plain
+// POST /v1/sdf: a fast-mode distance function of an equation already computed, quick
+// whatever the surface, which as a job would queue behind other clients' long jobs
+// (--job-threads) for nothing.
+import { ApiError, apiHost, checkHealth, implicitizeRequest, postJson, sdfRequest } from './api.js';
 import { fillExamplesMenu, loadExamples } from './examples.js';
+import { runJob } from './jobs.js';
 import { defaultCamera, Preview, ShaderError } from './preview.js';
 
 const $ = (id) => document.getElementById(id);
@@ -28,6 +40,8 @@ const ui = {
   progress: $('progress'),
   progressText: $('progress-text'),
   progressTime: $('progress-time'),
+  progressPhase: $('progress-phase'),
+  jobBar: $('job-progress'),
   cancel: $('cancel'),
   submitButtons: [$('implicitize'), $('draw')],
   generalError: $('general-error'),
@@ -63,7 +77,7 @@ const ui = {
 const state = {
   mode: 'parametric',
   examples: [],
-  busy: null, // the running request: {controller, started, timer, setLabel}
+  busy: null, // the running request: {controller, started, timer, setLabel, job}
   drawn: null, // {source, equation, box, name, mode, shape, answerBox, dimension}: what the preview shows
   answered: null, // {source, equation, box, name}: the surface whose answer is shown (a mode switch redraws it)
   boxFromExample: false, // the box input holds the example's box (refilled when the tab changes)
@@ -225,7 +239,8 @@ function errorText(error) {
   code.textContent = error.code;
   fragment.append(code, ': ', error.message);
   if (error.hint) fragment.append(` — ${error.hint}`);
-  if (error.code === 'overloaded' && error.retryAfter) fragment.append(` (retry in ${error.retryAfter} s)`);
+  // overloaded (503) and too_many_jobs (429) say when to come back.
+  if (error.retryAfter) fragment.append(` (retry in ${error.retryAfter} s)`);
   if (Array.isArray(error.details?.generators) && error.details.generators.length) {
     const pre = document.createElement('pre');
     pre.className = 'caret';
@@ -285,7 +300,13 @@ function startBusy(label) {
   const busy = { controller, started: performance.now(), timer: 0 };
   const tick = () => (ui.progressTime.textContent = `${((performance.now() - busy.started) / 1000).toFixed(1)} s`);
   busy.timer = setInterval(tick, 100);
-  busy.setLabel = (text) => setProgress('busy', text);
+  // A new step of the request: the previous job's phase and bar no longer apply.
+  busy.setLabel = (text) => {
+    setProgress('busy', text);
+    hideJobProgress();
+  };
+  // What runJob() needs: the request's signal, and where its job's states go.
+  busy.job = { signal: controller.signal, onProgress: (job, feed) => showJobProgress(busy, job, feed) };
   state.busy = busy;
   setProgress('busy', label);
   tick();
@@ -304,13 +325,57 @@ function endBusy(busy, kind, text) {
   for (const b of ui.submitButtons) b.disabled = false;
   ui.progress.removeAttribute('aria-busy');
   setProgress(kind, text);
+  hideJobProgress();
   return true;
+}
+
+/// Shows the state `job` of the running request's job (docs/api.md, "Jobs"): its phase
+/// and, where the server knows how far it got, a bar (indeterminate otherwise); the
+/// elapsed time is the request's own clock. #progress keeps the job's id, status, the
+/// road its states came by (`feed`: submit, events, polling) and how many arrived, for
+/// scripts and tests.
+function showJobProgress(busy, job, feed) {
+  if (state.busy !== busy) return; // a state that arrived after its request ended
+  const data = ui.progress.dataset;
+  const updates = data.job === job.id ? Number(data.jobUpdates) + 1 : 1;
+  data.job = job.id;
+  data.jobStatus = job.status;
+  data.jobFeed = feed;
+  data.jobUpdates = String(updates);
+  ui.progressPhase.textContent = describeJobProgress(job);
+  ui.progressPhase.title = ui.progressPhase.textContent; // whole, where the column cuts it
+  const fraction = job.progress?.fraction;
+  if (Number.isFinite(fraction)) ui.jobBar.value = fraction;
+  else ui.jobBar.removeAttribute('value'); // indeterminate: the loop does not know its total
+  ui.jobBar.hidden = false;
+}
+
+// "F4 matrix reduction 12/40 · modular Groebner basis (primes): 2": the innermost
+// loop reporting with its count where it knows its total, then the outer loop's.
+function describeJobProgress(job) {
+  const p = job.progress || {};
+  let text = p.phase || job.status;
+  if (p.total) text += ` ${p.done}/${p.total}`;
+  if (p.stage?.phase) text += ` · ${p.stage.phase}: ${p.stage.done}${p.stage.total ? `/${p.stage.total}` : ''}`;
+  if (job.cancel_requested) text += ' · cancelling';
+  return text;
+}
+
+// The bar and the phase off; #progress keeps the last job's id for scripts.
+function hideJobProgress() {
+  ui.jobBar.hidden = true;
+  ui.jobBar.removeAttribute('value');
+  ui.progressPhase.textContent = '';
+  ui.progressPhase.title = '';
 }
 
 ui.cancel.addEventListener('click', () => state.busy && state.busy.controller.abort());
 document.addEventListener('keydown', (e) => {
   if (e.key === 'Escape' && state.busy) state.busy.controller.abort();
 });
+// A job outlives the page that asked for it: leaving the page cancels it (the DELETE
+// is sent with keepalive, so it goes out as the page goes away).
+window.addEventListener('pagehide', () => state.busy && state.busy.controller.abort());
 
 // ---------------------------------------------------------------- empty states
 
@@ -491,7 +556,7 @@ function hidePreviewError() {
 }
 
 /// The CPU renderer's image of the same surface, for browsers without WebGL2.
-async function drawOnServer(drawn, mode, signal) {
+async function drawOnServer(drawn, mode, busy) {
   // As large as the space under the message allows (at most 800×600).
   const rect = ui.noWebgl.getBoundingClientRect();
   const top = ui.noWebgl.querySelector('p').getBoundingClientRect().bottom - rect.top + 14;
@@ -503,7 +568,7 @@ async function drawOnServer(drawn, mode, signal) {
     body.eye = camera.eye;
     body.target = camera.target;
   }
-  const blob = await renderPng(body, { signal });
+  const blob = await runJob('render', body, busy.job);
   if (ui.cpuImage.src) URL.revokeObjectURL(ui.cpuImage.src);
   ui.cpuImage.src = URL.createObjectURL(blob);
   ui.cpuImage.hidden = false;
@@ -552,7 +617,7 @@ async function drawSurface(source, equation, box, name, busy) {
   const shape = ui.shape.value;
   const signal = busy.controller.signal;
   const timeoutMs = Number(ui.timeout.value);
-  const answer = await sdf({ ...source, shape, mode, box, name, timeoutMs }, { signal });
+  const answer = await runJob('sdf', sdfRequest({ ...source, shape, mode, box, name, timeoutMs }), busy.job);
   // An answer that arrived as the request was cancelled or replaced is not drawn.
   signal.throwIfAborted();
   const dimension = answer.dimension === 2 ? 2 : 3;
@@ -567,7 +632,8 @@ async function drawSurface(source, equation, box, name, busy) {
     // when F has no z (a cylinder over a curve), where {implicit} would be a plane curve.
     const implicit = answer.leaves?.[0]?.implicit || equation;
     const scene = { type: 'implicit', equation: implicit, shape: 'solid' };
-    const signed = await sdf({ scene, mode: 'fast', box: answerBox, name: `${name}_side`, timeoutMs }, { signal });
+    // A plain POST, not a job: the comment at the top of this file says why.
+    const signed = await postJson('/v1/sdf', sdfRequest({ scene, mode: 'fast', box: answerBox, name: `${name}_side`, timeoutMs }), { signal });
     signal.throwIfAborted();
     side = { glsl: signed.glsl, functionName: signed.function };
   }
@@ -578,7 +644,7 @@ async function drawSurface(source, equation, box, name, busy) {
   const drawn = { source, equation, box, name, mode, shape, answerBox, dimension };
   if (!preview) {
     busy.setLabel('Rendering on the server…');
-    await drawOnServer(drawn, mode, signal);
+    await drawOnServer(drawn, mode, busy);
     showDrawn(busy, drawn);
     return answer;
   }
@@ -694,7 +760,8 @@ function submitParametric() {
     const started = performance.now();
     let result;
     try {
-      result = await implicitize({ x, y, z, parameters, method: ui.method.value, timeoutMs: Number(ui.timeout.value) }, { signal: busy.controller.signal });
+      const request = implicitizeRequest({ x, y, z, parameters, method: ui.method.value, timeoutMs: Number(ui.timeout.value) });
+      result = await runJob('implicitize', request, busy.job);
     } catch (e) {
       if (e instanceof ApiError) e.fieldMap = PARAMETRIC_FIELDS;
       // A name the field does not list: most likely the field is still s, t.
@@ -877,7 +944,7 @@ for (const radio of document.querySelectorAll('input[name="mode"]')) radio.addEv
 ui.shape.addEventListener('change', redrawInMode);
 ui.aa.addEventListener('change', () => {
   if (preview) preview.setAntialiasing(Number(ui.aa.value));
-  else if (state.drawn) run('Rendering on the server…', async (busy) => (await drawOnServer(state.drawn, currentMode(), busy.controller.signal), 'Rendered on the server.'));
+  else if (state.drawn) run('Rendering on the server…', async (busy) => (await drawOnServer(state.drawn, currentMode(), busy), 'Rendered on the server.'));
 });
 ui.resetView.addEventListener('click', () => preview && preview.resetView());
 

@@ -1,7 +1,7 @@
 // Browser tests of the web client's parametric inputs (issue 20), on the real server in
 // Debian's chromium (harness.mjs), nothing mocked:
 // - the parameters field: it labels the inputs x(u,v) and the domain's numbers, every
-//   request (POST /v1/implicitize and /v1/sdf) carries its names in order, the domain
+//   request (implicitize and sdf, as jobs) carries its names in order, the domain
 //   follows that order, and bad names are shown beside the field;
 // - nothing on screen answers another input: a new request clears the previous
 //   equation, facts, scripts, GLSL and preview (the canvas is blank), and a request that
@@ -110,8 +110,13 @@ before(async () => {
   browser = await launchChromium();
   page = await browser.newPage({ viewport: { width: 1280, height: 800 }, deviceScaleFactor: 1 });
   watchErrors(page, pageErrors);
+  // The page runs its computations as jobs: POST /v1/jobs {kind, request} is recorded
+  // as the endpoint's own POST with its body, which is what these tests look at.
   page.on('request', (r) => {
-    if (r.method() === 'POST') posted.push({ path: new URL(r.url()).pathname, body: JSON.parse(r.postData() || 'null') });
+    if (r.method() !== 'POST') return;
+    const pathname = new URL(r.url()).pathname;
+    const body = JSON.parse(r.postData() || 'null');
+    posted.push(pathname === '/v1/jobs' ? { path: `/v1/${body.kind}`, body: body.request } : { path: pathname, body });
   });
   await page.goto(server.url + '/?aa=1');
   await page.waitForSelector('body[data-ready="true"]');

@@ -10,8 +10,9 @@
 // shows exactly the GLSL POST /v1/sdf returns, and its silhouette matches the CPU
 // renderer's image of the same view (POST /v1/render, IoU >= 0.9) in fast and safe
 // mode; Copy GLSL puts that text on the clipboard; errors appear beside the right
-// input with the server's position selected and marked; Cancel aborts a long
-// Gröbner computation and the server counts it cancelled; without WebGL2 the page
+// input with the server's position selected and marked; Cancel deletes the job of a
+// long Gröbner computation and the server counts it cancelled (web_jobs.test.mjs tests
+// the jobs themselves); without WebGL2 the page
 // says so and shows the server's CPU image; examples.json matches shared/bench;
 // the hyperbolic paraboloid, Enneper's surface and a bicubic patch are drawn as
 // two-sided sheets (both side colours, the CPU renderer's sheet and not its solid with
@@ -638,7 +639,7 @@ test('a long request shows its elapsed time and Cancel stops it, here and on the
   assert.match(await page.textContent('#progress-text'), /^Cancelled after \d+\.\d s\.$/);
   assert.equal(await page.isHidden('#cancel'), true);
   assert.equal(await page.isEnabled('#implicitize'), true);
-  // The server noticed the closed connection and cancelled the computation.
+  // The page deleted its job (DELETE /v1/jobs/{id}) and the server cancelled the computation.
   const deadline = Date.now() + 15000;
   let cancelled = cancelledBefore;
   while (Date.now() < deadline && cancelled <= cancelledBefore) {
