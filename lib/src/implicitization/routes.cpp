@@ -119,6 +119,9 @@ std::optional<ImplicitizeResult> modular_groebner_route(const Parametrization& p
   ModularGroebnerParams modular;
   modular.buchberger = {params.buchberger, params.budget};
   modular.prove = false;
+  // F4 modulo each prime: faster than Buchberger modulo p on every surface that takes
+  // more than a second (docs/benchmarks.md, "The elimination route on F4").
+  modular.algorithm = ModularAlgorithm::f4;
   modular.lift_only_free_of_first = ideal.eliminated.size();
   ModularGroebnerStats stats;
   const EliminationResult elimination =

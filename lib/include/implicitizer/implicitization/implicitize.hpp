@@ -44,8 +44,8 @@ struct ImplicitizeParams {
   Budget budget;
   /// The pair selection and criteria of the Gröbner route (over ℚ and modulo primes).
   BuchbergerVariant buchberger;
-  /// The Gröbner route computes the elimination modulo primes (eliminate_modular,
-  /// lifting only the elimination ideal) and proves the equation it lifts by exact
+  /// The Gröbner route computes the elimination modulo primes (eliminate_modular with
+  /// F4 modulo each prime, lifting only the elimination ideal) and proves the equation it lifts by exact
   /// substitution and check_implicit_equation's minimality; where that proof fails
   /// (an image that is not a surface, an unlucky check prime) it falls back to
   /// Buchberger over ℚ, which also gives the generators of a non-principal ideal.
