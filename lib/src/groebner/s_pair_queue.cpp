@@ -19,6 +19,7 @@ SPair SPairQueue::make_pair(const std::vector<BasisEntry>& basis, std::size_t i,
   p.j = std::max(i, t);
   p.lcm.resize(ring_.monomial_size());
   ring_.lcm(basis[i].lead(), basis[t].lead(), p.lcm.data());
+  p.lcm_mask = ring_.divisor_mask(p.lcm.data());
   p.lcm_degree = ring_.total_degree(p.lcm.data());
   p.sugar = std::max(basis[i].sugar - basis[i].lead_degree, basis[t].sugar - basis[t].lead_degree) +
             ring_.sugar_degree(p.lcm.data());
@@ -79,6 +80,9 @@ void SPairQueue::update_gebauer_moller(std::vector<BasisEntry>& basis, std::size
     const std::size_t other = p.i == t ? p.j : p.i;
     return params_.variant.product_criterion && ring_.coprime(basis[other].lead(), basis[t].lead());
   };
+  const auto lcm_divides = [&](const SPair& a, const SPair& b) {
+    return (a.lcm_mask & ~b.lcm_mask) == 0 && ring_.divides(a.lcm.data(), b.lcm.data());
+  };
   // M and F: walk the new pairs; keep (i,t) if it is coprime (it then stands for its
   // lcm class) or no other remaining new pair has an lcm dividing its lcm.
   std::vector<SPair> kept;
@@ -89,11 +93,11 @@ void SPairQueue::update_gebauer_moller(std::vector<BasisEntry>& basis, std::size
     if (!coprime(fresh[a])) {
       for (std::size_t b = 0; b < fresh.size() && !drop; ++b) {
         examined(steps);
-        if (!taken[b] && ring_.divides(fresh[b].lcm.data() + 0, fresh[a].lcm.data())) drop = true;
+        if (!taken[b] && lcm_divides(fresh[b], fresh[a])) drop = true;
       }
       for (std::size_t b = 0; b < kept.size() && !drop; ++b) {
         examined(steps);
-        if (ring_.divides(kept[b].lcm.data(), fresh[a].lcm.data())) drop = true;
+        if (lcm_divides(kept[b], fresh[a])) drop = true;
       }
     }
     if (drop) {
@@ -104,11 +108,12 @@ void SPairQueue::update_gebauer_moller(std::vector<BasisEntry>& basis, std::size
   }
   // B on the old pairs.
   const std::int32_t* lt = basis[t].lead();
+  const std::uint64_t lt_mask = basis[t].mask;
   const std::size_t w = ring_.monomial_size();
   std::vector<std::int32_t> lit(w), ljt(w);
   for (auto& p : heap_) {
     examined(steps);
-    if (!p.alive || !ring_.divides(lt, p.lcm.data())) continue;
+    if (!p.alive || (lt_mask & ~p.lcm_mask) != 0 || !ring_.divides(lt, p.lcm.data())) continue;
     ring_.lcm(basis[p.i].lead(), lt, lit.data());
     ring_.lcm(basis[p.j].lead(), lt, ljt.data());
     if (!ring_.equal(lit.data(), p.lcm.data()) && !ring_.equal(ljt.data(), p.lcm.data())) {
@@ -129,7 +134,9 @@ void SPairQueue::update_gebauer_moller(std::vector<BasisEntry>& basis, std::size
   // Elements whose leading monomial lm(t) divides need no new pairs any more.
   for (std::size_t i = 0; i < t; ++i) {
     examined(steps);
-    if (!basis[i].redundant && ring_.divides(lt, basis[i].lead())) basis[i].redundant = true;
+    if (!basis[i].redundant && (lt_mask & ~basis[i].mask) == 0 && ring_.divides(lt, basis[i].lead())) {
+      basis[i].redundant = true;
+    }
   }
 }
 

@@ -26,6 +26,7 @@ struct BasisEntry {
 struct SPair {
   std::size_t i = 0, j = 0;
   std::vector<std::int32_t> lcm;
+  std::uint64_t lcm_mask = 0;  // divisor mask of lcm: a cheap necessary test of divisibility
   std::int32_t sugar = 0;
   std::int32_t lcm_degree = 0;
   std::uint64_t serial = 0;  // creation order: the final tie-break, for determinism

@@ -72,12 +72,14 @@ std::uint64_t Ring::divisor_mask(const std::int32_t* m) const {
   if (n == 0) return 0;
   const std::size_t per = std::max<std::size_t>(1, 64 / n);
   std::uint64_t mask = 0;
-  std::size_t bit = 0;
-  for (std::size_t i = 0; i < n && bit < 64; ++i) {
+  // Variable i's bits start at i·per; an exponent e sets the lowest min(e, per) of them.
+  for (std::size_t i = 0; i < n && i * per < 64; ++i) {
+    const std::size_t width = std::min(per, 64 - i * per);
     const std::int32_t e = m[key_size_ + i];
-    for (std::size_t j = 0; j < per && bit < 64; ++j, ++bit) {
-      if (e > static_cast<std::int32_t>(j)) mask |= std::uint64_t{1} << bit;
-    }
+    if (e <= 0) continue;
+    const std::size_t set = std::min<std::size_t>(static_cast<std::size_t>(e), width);
+    const std::uint64_t bits = set == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << set) - 1;
+    mask |= bits << (i * per);
   }
   return mask;
 }
