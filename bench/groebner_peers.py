@@ -4,9 +4,12 @@ Singular's and Macaulay2's, in one run, each as a whole process.
 
     python3 bench/groebner_peers.py [--ideals cyclic5,katsura5,...] [--timeout S]
         [--methods modular,auto] [--giac /tmp/giac_gbasis] [--bin build/bin/implicitizer]
+        [--before OTHER/build/bin/implicitizer]
 
 Ours runs `implicitizer groebner --order grevlex --method M --json` and the table also
 shows, from its JSON, the time of the runs modulo primes and of the proof over Q.
+With --before, every method also runs with that binary (another commit's build),
+just before ours on the same ideal, so that the two are compared within one run.
 Giac's driver is /work/shared/bench/peers/giac_gbasis.cpp built into /tmp (its
 README), run with one thread; Singular runs `std` with redSB and redTail; Macaulay2
 `gb`. A run past --timeout prints "> T". The ideals are ../shared/bench/gb/ideals.json.
@@ -50,8 +53,8 @@ def ours(binary, ideal, method, timeout):
     modular = answer["stats"].get("modular", {})
     detail = "%d elements, route %s" % (len(answer["basis"]), answer.get("method", "?"))
     if modular:
-        detail += ": %d primes, modular %.2f s, lift %.2f s, proof %.2f s" % (
-            modular.get("primes", 0), modular.get("modular_ms", 0) / 1000,
+        detail += ": %d primes (%d replayed), modular %.2f s, lift %.2f s, proof %.2f s" % (
+            modular.get("primes", 0), modular.get("replayed_primes", 0), modular.get("modular_ms", 0) / 1000,
             modular.get("lift_ms", 0) / 1000, modular.get("verify_ms", 0) / 1000)
     return seconds, detail
 
@@ -93,21 +96,24 @@ def main():
     parser.add_argument("--giac", default="/tmp/giac_gbasis")
     parser.add_argument("--bin", default=os.path.join(ROOT, "build", "bin", "implicitizer"))
     parser.add_argument("--peers", default="giac,singular,m2")
+    parser.add_argument("--before", default="")
     args = parser.parse_args()
     with open(IDEALS) as f:
         ideals = {i["name"]: i for i in json.load(f)}
     methods = args.methods.split(",")
     peers = [p for p in args.peers.split(",") if p]
-    print("| ideal | " + " | ".join("ours (%s)" % m for m in methods) + " | " + " | ".join(peers) + " |")
-    print("|---" * (1 + len(methods) + len(peers)) + "|")
+    ours_columns = [(m, b) for m in methods for b in ([args.before] if args.before else []) + [args.bin]]
+    print("| ideal | " + " | ".join("ours (%s%s)" % (m, ", before" if b == args.before else "")
+                                    for m, b in ours_columns) + " | " + " | ".join(peers) + " |")
+    print("|---" * (1 + len(ours_columns) + len(peers)) + "|")
     notes = []
     for name in args.ideals.split(","):
         ideal = ideals[name]
         cells = []
-        for method in methods:
-            seconds, detail = ours(args.bin, ideal, method, args.timeout)
+        for method, binary in ours_columns:
+            seconds, detail = ours(binary, ideal, method, args.timeout)
             cells.append(show(seconds, args.timeout))
-            notes.append("%s, ours (%s): %s" % (name, method, detail))
+            notes.append("%s, ours (%s%s): %s" % (name, method, ", before" if binary == args.before else "", detail))
         for peer in peers:
             if peer == "giac":
                 seconds, detail = giac(args.giac, ideal, args.timeout)

@@ -98,6 +98,17 @@ TEST(F4Test, UnitAndZeroIdeals) {
   EXPECT_TRUE(modulo({}, kSmallWordPrime, ModularAlgorithm::f4).empty());
 }
 
+// The multi-modular route with F4 modulo each prime, on one thread (so that which
+// primes run, and the counters asserted, never depend on the machine's load).
+ModularGroebnerParams f4_route(std::uint64_t first_prime = 0) {
+  ModularGroebnerParams params;
+  params.algorithm = ModularAlgorithm::f4;
+  params.first_prime = first_prime;
+  params.threads = 1;
+  params.buchberger.budget.set_timeout(60);
+  return params;
+}
+
 // The multi-modular route with F4 for each prime: the proven basis over ℚ is the
 // rational one, under every order (homogenized generators included).
 TEST(F4Test, ModularRouteWithF4EqualsTheRationalBasis) {
@@ -107,10 +118,7 @@ TEST(F4Test, ModularRouteWithF4EqualsTheRationalBasis) {
       SCOPED_TRACE(std::string(named.name) + " ideal " + ::testing::PrintToString(print_all(generators)));
       const std::optional<GroebnerResult> rational = testing::compute_bounded(generators);
       ASSERT_TRUE(rational);
-      ModularGroebnerParams params;
-      params.algorithm = ModularAlgorithm::f4;
-      params.threads = 1;
-      params.buchberger.budget.set_timeout(60);
+      const ModularGroebnerParams params = f4_route();
       ModularGroebnerStats stats;
       EXPECT_EQ(print_all(compute_groebner_basis_modular(generators, params, &stats).basis),
                 print_all(rational->basis));
@@ -123,16 +131,56 @@ TEST(F4Test, ModularRouteWithF4EqualsTheRationalBasis) {
 TEST(F4Test, ModularRouteWithF4SurvivesUnluckyPrimes) {
   const RingPtr ring = Ring::make({"u0", "u1", "u2", "u3"});
   const auto generators = testing::katsura(ring);
-  ModularGroebnerParams params;
-  params.algorithm = ModularAlgorithm::f4;
-  params.first_prime = 3;
-  params.threads = 1;
-  params.buchberger.budget.set_timeout(60);
+  const ModularGroebnerParams params = f4_route(/*first_prime=*/3);
   ModularGroebnerStats stats;
   EXPECT_EQ(print_all(compute_groebner_basis_modular(generators, params, &stats).basis),
             print_all(compute_groebner_basis(generators).basis));
   EXPECT_TRUE(stats.proven);
   EXPECT_GT(stats.unlucky_primes + stats.bad_primes, 0u);
+}
+
+// The first prime's F4 run replayed on the others (f4_trace.hpp): the proven basis is
+// the same with the trace and without, and on ideals that need several primes the
+// replays happen (a candidate is only ever checked on primes run in full).
+TEST(F4Test, ReplayedPrimesGiveTheBasisFullRunsGive) {
+  std::vector<std::vector<Polynomial>> ideals;
+  const RingPtr xyz = Ring::make({"x", "y", "z"}, MonomialOrder::grevlex());
+  for (auto& generators : testing::random_ideals(xyz, 10)) ideals.push_back(std::move(generators));
+  const std::string big = "123456789012345678901234567890123456789012345678901234567890123456789012345";
+  ideals.push_back(testing::parse_all({"x^2-" + big + "/7*y", "x*y-" + big + "*" + big + "/11*z", "z^3-x"}, xyz));
+  const RingPtr u = Ring::make({"u0", "u1", "u2", "u3", "u4"});
+  ideals.push_back(testing::katsura(u));
+  std::size_t replayed = 0;
+  for (const auto& generators : ideals) {
+    SCOPED_TRACE(::testing::PrintToString(print_all(generators)));
+    ModularGroebnerParams params = f4_route();
+    ModularGroebnerStats traced, full;
+    const GroebnerResult with = compute_groebner_basis_modular(generators, params, &traced);
+    params.trace = false;
+    const GroebnerResult without = compute_groebner_basis_modular(generators, params, &full);
+    EXPECT_EQ(print_all(with.basis), print_all(without.basis));
+    EXPECT_TRUE(traced.proven);
+    EXPECT_FALSE(traced.trace_dropped);
+    EXPECT_EQ(traced.replay_failures, 0u);
+    EXPECT_EQ(full.replayed_primes, 0u);
+    replayed += traced.replayed_primes;
+  }
+  EXPECT_GT(replayed, 0u);
+}
+
+// A trace learned on an unlucky prime: 13 cancels terms of this ideal's basis (1/13
+// appears in it), so the basis modulo 13 has other leading monomials, and replays of
+// its path would copy them. A prime run in full contradicts it, the trace and every
+// lift are dropped, and the route still proves the rational basis.
+TEST(F4Test, ATraceLearnedOnAnUnluckyPrimeIsDropped) {
+  const RingPtr ring = Ring::make({"x", "y", "z"});
+  const auto generators = testing::parse_all({"187*x^2+y", "x*y-13*z^2+1", "y^3-z"}, ring);
+  const ModularGroebnerParams params = f4_route(/*first_prime=*/12);
+  ModularGroebnerStats stats;
+  EXPECT_EQ(print_all(compute_groebner_basis_modular(generators, params, &stats).basis),
+            print_all(compute_groebner_basis(generators).basis));
+  EXPECT_TRUE(stats.proven);
+  EXPECT_TRUE(stats.trace_dropped);
 }
 
 // The limit that stopped F4 on `generators`, and where (the exception's message).

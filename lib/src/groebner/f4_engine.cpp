@@ -5,6 +5,7 @@
 
 #include "f4_matrix.hpp"
 #include "f4_row_echelon.hpp"
+#include "f4_trace.hpp"
 #include "growing_basis.hpp"
 #include "s_pair_queue.hpp"
 
@@ -15,17 +16,22 @@ namespace {
 class F4Engine {
  public:
   F4Engine(const Ring& ring, const ModularArithmetic& arithmetic, const BuchbergerParams& params,
-           BuchbergerStats& stats)
+           BuchbergerStats& stats, F4Trace* learn)
       : ring_(ring),
         arithmetic_(arithmetic),
         params_(params),
         stats_(stats),
+        learn_(learn),
         queue_(ring, params, stats),
         use_sugar_(params.variant.strategy == SelectionStrategy::sugar ||
                    (params.variant.strategy == SelectionStrategy::automatic && ring.is_elimination_order())) {}
 
   F4Outcome run(std::vector<ModPolynomial> generators) {
     F4Outcome out;
+    if (learn_ != nullptr) {
+      learn_->start(static_cast<std::size_t>(
+          std::count_if(generators.begin(), generators.end(), [](const ModPolynomial& g) { return !g.empty(); })));
+    }
     if (!basis_.insert_generators(std::move(generators), params_.budget, "F4 (the generators)")) {
       out.unit = true;
       return out;
@@ -36,6 +42,13 @@ class F4Engine {
         out.unit = true;
         return out;
       }
+    }
+    if (learn_ != nullptr) {
+      std::vector<std::size_t> minimal;
+      for (std::size_t i = 0; i < basis_.entries().size(); ++i) {
+        if (!basis_.entries()[i].redundant) minimal.push_back(i);
+      }
+      learn_->finish(std::move(minimal));
     }
     out.basis = basis_.take_nonredundant();
     return out;
@@ -89,6 +102,7 @@ class F4Engine {
     stats_.reduction_steps += matrix.to_reduce.size();
     stats_.work += echelon.work;
     stats_.zero_reductions += selected.size() - std::min(selected.size(), echelon.new_rows.size());
+    if (learn_ != nullptr) learn_->record_step(ring_, matrix, echelon);
     // Decreasing leading monomials (increasing columns): an element whose leading
     // monomial a later one divides is then marked redundant by the later one's update.
     std::sort(echelon.new_rows.begin(), echelon.new_rows.end(),
@@ -112,6 +126,7 @@ class F4Engine {
   const ModularArithmetic& arithmetic_;
   const BuchbergerParams& params_;
   BuchbergerStats& stats_;
+  F4Trace* learn_;
   SPairQueue queue_;
   bool use_sugar_;
   std::optional<SPair> held_;
@@ -121,8 +136,8 @@ class F4Engine {
 }  // namespace
 
 F4Outcome run_f4(const Ring& ring, const ModularArithmetic& arithmetic, std::vector<ModPolynomial> generators,
-                 const BuchbergerParams& params, BuchbergerStats& stats) {
-  return F4Engine(ring, arithmetic, params, stats).run(std::move(generators));
+                 const BuchbergerParams& params, BuchbergerStats& stats, F4Trace* learn) {
+  return F4Engine(ring, arithmetic, params, stats, learn).run(std::move(generators));
 }
 
 }  // namespace implicitizer::detail

@@ -21,6 +21,8 @@
 
 namespace implicitizer::detail {
 
+class F4Trace;
+
 // What an F4 run leaves: the unit ideal, or a Gröbner basis (minimal: no leading
 // monomial divides another's; neither interreduced nor sorted).
 struct F4Outcome {
@@ -33,8 +35,10 @@ struct F4Outcome {
 // normal strategy), the criteria params.variant's product and chain criteria;
 // tail_reduce is implied (matrix rows are fully reduced by the pivots). Counts pairs,
 // criteria, rows reduced and work in `stats`. Throws LimitExceeded from params.budget.
+// With `learn`, the run's path is recorded there for replays on other primes
+// (f4_trace.hpp).
 F4Outcome run_f4(const Ring& ring, const ModularArithmetic& arithmetic, std::vector<ModPolynomial> generators,
-                 const BuchbergerParams& params, BuchbergerStats& stats);
+                 const BuchbergerParams& params, BuchbergerStats& stats, F4Trace* learn = nullptr);
 
 // The same outcome by `algorithm`: run_f4, or the Buchberger engine modulo p (defined
 // in f4.cpp, beside the public entry point).

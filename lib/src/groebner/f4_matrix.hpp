@@ -17,39 +17,17 @@
 
 #include "implicitizer/core/budget.hpp"
 #include "implicitizer/polynomial/ring.hpp"
+#include "macaulay_rows.hpp"
 #include "mod_polynomial.hpp"
 #include "reducer.hpp"
 
 namespace implicitizer::detail {
 
-// The monomials met while building one matrix, each with a dense id, found by an
-// open-addressing hash on their exponents (mathicgb and msolve keep one such table
-// per matrix: hashing beats a tree of monomials by the comparisons a tree needs).
-class MonomialTable {
- public:
-  explicit MonomialTable(const Ring& ring);
-
-  // The id of `m` (monomial_size words), adding it if new.
-  std::uint32_t insert(const std::int32_t* m);
-  // The monomial with id `id`.
-  const std::int32_t* monomial(std::uint32_t id) const { return words_.data() + std::size_t{id} * width_; }
-  std::size_t size() const { return hashes_.size(); }
-
- private:
-  std::uint64_t hash(const std::int32_t* m) const;
-  void grow();
-
-  const Ring& ring_;
-  std::size_t width_;
-  std::vector<std::int32_t> words_;    // width_ words per id
-  std::vector<std::uint64_t> hashes_;  // per id
-  std::vector<std::uint32_t> slots_;   // id + 1, 0 when empty; size a power of two
-};
-
 // One row: the multiple shift·g of a basis element, or a reduced row the echelon step
 // produced. Columns strictly increasing (monomials decreasing), the first
 // coefficient 1.
 struct MatrixRow {
+  std::size_t poly = 0;  // the basis element of a multiple u·g (not used for reduced rows)
   std::vector<std::uint32_t> columns;
   const std::uint64_t* coefficients = nullptr;  // into a basis element, or into `owned`
   std::vector<std::uint64_t> owned;

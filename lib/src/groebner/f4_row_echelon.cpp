@@ -86,6 +86,7 @@ EchelonResult reduce_to_row_echelon(const MacaulayMatrix& matrix, const nmod_t& 
     budget.check_terms(out.size(), kWhere);
     make_monic(out, modulus);
     result.new_rows.push_back(std::move(out));
+    result.sources.push_back(k);
     pivot[result.new_rows.back().lead()] = &result.new_rows.back();
   }
   return result;

@@ -26,6 +26,7 @@ namespace implicitizer::detail {
 // found before it), and the work done (Budget::charge_work units, also charged).
 struct EchelonResult {
   std::vector<MatrixRow> new_rows;
+  std::vector<std::size_t> sources;  // per new row, its index in matrix.to_reduce
   std::uint64_t work = 0;
 };
 

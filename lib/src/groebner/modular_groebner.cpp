@@ -1,8 +1,8 @@
 #include "implicitizer/groebner/modular_groebner.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -10,7 +10,7 @@
 
 #include "buchberger_engine.hpp"
 #include "f4_engine.hpp"
-#include "growing_basis.hpp"
+#include "f4_trace.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/groebner/reduced_basis.hpp"
@@ -19,7 +19,7 @@
 #include "implicitizer/modular/prime_sequence.hpp"
 #include "int_polynomial.hpp"
 #include "mod_polynomial.hpp"
-#include "s_pair_queue.hpp"
+#include "rational_proof.hpp"
 
 namespace implicitizer {
 
@@ -57,6 +57,9 @@ struct Projection {
 struct PrimeRun {
   std::uint64_t prime = 0;
   bool bad = false;
+  bool replayed = false;       // by the trace
+  bool replay_failed = false;  // the trace was left: run in full
+
   std::vector<ModPolynomial> basis;
   BuchbergerStats stats;
 };
@@ -89,8 +92,11 @@ ModPolynomial dehomogenize_modulo(const ModPolynomial& f, const Ring& from, cons
   return out;
 }
 
+// The reduced basis modulo `prime`: by replaying `trace` when there is one, recording
+// into `learn` when asked (F4 only).
 PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generators, std::uint64_t prime,
-                   const ModularGroebnerParams& params, const Projection& projection) {
+                   const ModularGroebnerParams& params, const Projection& projection, const detail::F4Trace* trace,
+                   detail::F4Trace* learn) {
   PrimeRun run;
   run.prime = prime;
   const detail::ModularArithmetic arithmetic(ring, prime);
@@ -102,8 +108,17 @@ PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generator
     }
     reduced.push_back(arithmetic.reduce_coefficients(g));
   }
-  detail::F4Outcome outcome = detail::run_modular_algorithm(ring, arithmetic, std::move(reduced), params.algorithm,
-                                                            params.buchberger, run.stats);
+  std::optional<detail::F4Outcome> replayed;
+  if (trace != nullptr) {
+    replayed = trace->replay(ring, arithmetic, reduced, params.buchberger.budget, run.stats);
+    run.replayed = replayed.has_value();
+    run.replay_failed = !run.replayed;
+  }
+  detail::F4Outcome outcome =
+      replayed           ? std::move(*replayed)
+      : learn != nullptr ? detail::run_f4(ring, arithmetic, std::move(reduced), params.buchberger, run.stats, learn)
+                         : detail::run_modular_algorithm(ring, arithmetic, std::move(reduced), params.algorithm,
+                                                         params.buchberger, run.stats);
   const Ring& lift_ring = projection.affine != nullptr ? *projection.affine : ring;
   if (outcome.unit) {
     ModPolynomial one;
@@ -238,49 +253,6 @@ bool agrees_modulo(const std::vector<IntPolynomial>& candidate, const PrimeRun& 
   return true;
 }
 
-// ---------------------------------------------------------------- the proof over ℚ
-
-// The S-pairs of `basis` that Gebauer–Möller's update (and the product criterion)
-// leave, as the Buchberger engine would reduce them on a candidate whose every
-// S-polynomial reduces to zero: then no element is added, so these are all its pairs.
-std::vector<detail::SPair> criterion_pairs(const Ring& ring, const std::vector<IntPolynomial>& basis,
-                                           const BuchbergerParams& params, BuchbergerStats& stats) {
-  detail::SPairQueue queue(ring, params, stats);
-  detail::GrowingBasis<IntPolynomial> entries(ring, queue);
-  entries.insert_generators(basis, params.budget, "the proof over Q (the pairs)");
-  std::vector<detail::SPair> pairs;
-  for (detail::SPair pair; queue.pop(entries.entries(), pair);) pairs.push_back(std::move(pair));
-  return pairs;
-}
-
-// (a) and (b) of the file comment: every generator reduces to zero modulo the
-// candidate, and the candidate is a Gröbner basis. The pairs' reductions modulo the
-// fixed candidate are independent, so they are shared among `threads` threads; the
-// first that does not reduce to zero stops them all.
-bool prove_candidate(const Ring& ring, const std::vector<IntPolynomial>& generators,
-                     const std::vector<Polynomial>& candidate, const BuchbergerParams& params, std::size_t threads,
-                     ModularGroebnerStats& stats) {
-  std::vector<IntPolynomial> basis;
-  for (const auto& g : candidate) basis.push_back(detail::to_int_polynomial(g));
-  std::vector<detail::Reducer> reducers;
-  for (const auto& g : basis) reducers.push_back({&g, ring.divisor_mask(g.monomials.data()), 0});
-  BuchbergerStats pair_stats;
-  const std::vector<detail::SPair> pairs = criterion_pairs(ring, basis, params, pair_stats);
-  const std::size_t jobs = generators.size() + pairs.size();
-  std::atomic<bool> refuted = false;
-  run_one_per_thread(std::min(threads, std::max<std::size_t>(jobs, 1)), [&](std::size_t k) {
-    detail::ReductionCounters counters;
-    for (std::size_t job = k; job < jobs && !refuted.load(std::memory_order_relaxed); job += threads) {
-      IntPolynomial f = job < generators.size() ? generators[job]
-                                                : detail::s_polynomial(ring, basis[pairs[job - generators.size()].i],
-                                                                       basis[pairs[job - generators.size()].j]);
-      if (!detail::reduce(ring, std::move(f), reducers, false, params.budget, counters).empty()) refuted = true;
-    }
-  });
-  stats.verification_pairs += pairs.size();
-  return !refuted;
-}
-
 // ---------------------------------------------------------------- homogenization
 
 bool is_homogeneous(const Polynomial& p) {
@@ -340,25 +312,38 @@ class ModularDriver {
   std::vector<Polynomial> run() {
     std::optional<std::vector<Polynomial>> candidate;
     for (;;) {
-      const std::vector<PrimeRun> batch = next_batch();
+      // A candidate is checked on primes run in full, never on replays of the trace
+      // the candidate may have come from.
+      const std::vector<PrimeRun> batch = next_batch(!candidate.has_value());
+      if (trace_ != nullptr && leaves_trace(batch)) {
+        drop_trace();
+        candidate.reset();
+      }
       if (candidate) {
         if (confirms(*candidate, batch)) {
           stats_.checking_primes = batch.size();
           if (!params_.prove) return *candidate;
           const Stopwatch timer;
-          const bool proven =
-              prove_candidate(*run_ring_, generators_, *candidate, params_.buchberger, threads_, stats_);
+          std::vector<IntPolynomial> basis;
+          for (const auto& g : *candidate) basis.push_back(detail::to_int_polynomial(g));
+          const detail::ProofOutcome proof =
+              detail::prove_groebner_basis(*run_ring_, generators_, basis, params_.buchberger, threads_);
+          stats_.verification_pairs += proof.pairs;
           stats_.verify_ms += timer.elapsed_ms();
-          if (proven) {
+          if (proof.proven) {
             stats_.proven = true;
             return *candidate;
           }
+          // Confirmed on full runs yet not a Gröbner basis: start again without replays.
+          if (trace_ != nullptr) drop_trace();
         }
         ++stats_.rejected_candidates;
         stats_.checking_primes = 0;  // absorbed below, with the others
         candidate.reset();
       }
-      for (const PrimeRun& run : batch) absorb(run);
+      for (const PrimeRun& run : batch) {
+        if (!run.replayed || trace_ != nullptr) absorb(run);  // replays of a dropped trace are not trusted
+      }
       const Stopwatch timer;
       BasisLift* majority = majority_lift();
       // Reconstruction costs about as much as one prime's Chinese remaindering of the
@@ -380,7 +365,7 @@ class ModularDriver {
   // millisecond a prime, less than starting a thread costs (measured 4–5 ms on a busy
   // machine, a scheduler tick), so more threads are used only when a prime took
   // longer than kThreadWorthMs.
-  std::vector<PrimeRun> next_batch() {
+  std::vector<PrimeRun> next_batch(bool replay) {
     const Stopwatch timer;
     std::vector<PrimeRun> batch;
     const std::size_t wanted = stats_.primes == 0 ? 1 : batch_size_;
@@ -391,9 +376,14 @@ class ModularDriver {
       }
       std::vector<std::uint64_t> primes;
       for (std::size_t i = batch.size(); i < wanted; ++i) primes.push_back(primes_.next());
+      // The first prime run with F4 (one, on this thread) records its path.
+      const bool learning = params_.trace && params_.algorithm == ModularAlgorithm::f4 && !stats_.trace_dropped &&
+                            trace_ == nullptr && primes.size() == 1;
+      auto learned = learning ? std::make_unique<detail::F4Trace>() : nullptr;
       std::vector<PrimeRun> runs(primes.size());
       run_one_per_thread(primes.size(), [&](std::size_t k) {
-        runs[k] = run_prime(*run_ring_, generators_, primes[k], params_, projection_);
+        runs[k] = run_prime(*run_ring_, generators_, primes[k], params_, projection_, replay ? trace_.get() : nullptr,
+                            learned.get());
       });
       for (auto& r : runs) {
         if (r.bad) {
@@ -401,7 +391,13 @@ class ModularDriver {
           continue;
         }
         ++stats_.primes;
-        stats_.last_prime = r.stats;
+        if (r.replayed) ++stats_.replayed_primes;
+        if (r.replay_failed) ++stats_.replay_failures;
+        if (!r.replayed) stats_.last_prime = r.stats;  // a replay skips most of what is counted
+        if (learned != nullptr && learned->complete()) {
+          trace_ = std::move(learned);
+          trace_key_ = leading_key(*ring_, r.basis);
+        }
         // How many primes the lift needs is known only when reconstruction succeeds.
         params_.buchberger.budget.report_stage("modular Groebner basis (primes)", stats_.primes, 0);
         batch.push_back(std::move(r));
@@ -411,6 +407,23 @@ class ModularDriver {
     if (stats_.primes == batch.size() && ms > kThreadWorthMs) batch_size_ = threads_;
     stats_.modular_ms += ms;
     return batch;
+  }
+
+  // Whether a prime run in full has other leading monomials than the prime the trace
+  // was learned on: one of the two is unlucky, and replays would copy the learned
+  // prime's path, so the trace is not to be trusted.
+  bool leaves_trace(const std::vector<PrimeRun>& batch) const {
+    return std::any_of(batch.begin(), batch.end(),
+                       [&](const PrimeRun& r) { return !r.replayed && leading_key(*ring_, r.basis) != trace_key_; });
+  }
+
+  // Forgets the trace and every lift (some may hold replays); the primes from here on
+  // run in full.
+  void drop_trace() {
+    trace_.reset();
+    stats_.trace_dropped = true;
+    lifts_.clear();
+    next_reconstruction_ = 1;
   }
 
   void absorb(const PrimeRun& run) {
@@ -476,6 +489,8 @@ class ModularDriver {
   std::size_t batch_size_ = 1;           // primes per batch after the first (threads_ once a prime is worth a thread)
   std::size_t next_reconstruction_ = 1;  // lifted primes needed before the next reconstruction
   std::map<std::vector<std::int32_t>, BasisLift> lifts_;
+  std::unique_ptr<const detail::F4Trace> trace_;  // the first prime's F4 run, replayed on the others
+  std::vector<std::int32_t> trace_key_;           // the leading monomials that prime found
 };
 
 }  // namespace

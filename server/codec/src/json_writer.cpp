@@ -60,6 +60,12 @@ void write_modular_stats(Writer& w, const ModularGroebnerStats& s) {
   w.Uint64(s.unlucky_primes);
   w.Key("bad_primes");
   w.Uint64(s.bad_primes);
+  w.Key("replayed_primes");
+  w.Uint64(s.replayed_primes);
+  w.Key("replay_failures");
+  w.Uint64(s.replay_failures);
+  w.Key("trace_dropped");
+  w.Bool(s.trace_dropped);
   w.Key("reconstructions");
   w.Uint64(s.reconstructions);
   w.Key("checking_primes");

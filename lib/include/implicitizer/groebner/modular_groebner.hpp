@@ -54,6 +54,11 @@ struct ModularGroebnerParams {
   /// Prove the candidate over ℚ (the file comment). false: the affine candidate
   /// after a consistency check on one more prime, for callers that prove it otherwise.
   bool prove = true;
+  /// With F4: the first prime's run is recorded and replayed on the others, which then
+  /// skip the pair criteria, symbolic preprocessing and the rows that reduced to zero
+  /// (a prime whose replay leaves the recorded path is run in full; the trace is
+  /// dropped when a candidate is rejected). false: every prime runs in full.
+  bool trace = true;
   /// 0: the primes just above 2^62 (PrimeSequence). Otherwise the primes from just
   /// above this value: tests force small primes, unlucky ones among them.
   std::uint64_t first_prime = 0;
@@ -73,6 +78,9 @@ struct ModularGroebnerStats {
   std::size_t unlucky_primes = 0;       ///< dropped: other leading monomials than the majority's
   std::size_t checking_primes = 0;      ///< the last batch, computed only to confirm the candidate
   std::size_t bad_primes = 0;           ///< skipped: dividing a leading coefficient of the generators
+  std::size_t replayed_primes = 0;      ///< computed by replaying the first prime's F4 trace
+  std::size_t replay_failures = 0;      ///< primes whose replay left the trace (then run in full)
+  bool trace_dropped = false;           ///< a full run contradicted the trace: lifts restarted without it
   std::size_t reconstructions = 0;      ///< rational reconstructions attempted
   std::size_t rejected_candidates = 0;  ///< candidates the consistency check or the proof rejected
   bool homogenized = false;             ///< the runs modulo p were on homogenized generators

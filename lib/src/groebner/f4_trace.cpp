@@ -1,0 +1,96 @@
+#include "f4_trace.hpp"
+
+#include <algorithm>
+
+namespace implicitizer::detail {
+
+void F4Trace::record_step(const Ring& ring, const MacaulayMatrix& matrix, const EchelonResult& echelon) {
+  // The columns the kept rows reach: their own, then, left to right, those of the
+  // pivot of every column reached (a pivot's columns lie right of its lead, so one
+  // sweep closes the set). The new rows the echelon step made pivots for later rows
+  // are combinations of rows and pivots already reached.
+  std::vector<char> reached(matrix.columns, 0);
+  for (const std::size_t k : echelon.sources) {
+    for (const std::uint32_t c : matrix.to_reduce[k].columns) reached[c] = 1;
+  }
+  std::vector<const MatrixRow*> pivot_at(matrix.columns, nullptr);
+  for (const MatrixRow& r : matrix.pivots) pivot_at[r.lead()] = &r;
+  std::vector<std::uint32_t> renumbered(matrix.columns, 0);
+  Step step;
+  const std::size_t w = ring.monomial_size();
+  for (std::size_t c = 0; c < matrix.columns; ++c) {
+    if (reached[c] == 0) continue;
+    if (const MatrixRow* r = pivot_at[c]; r != nullptr) {
+      for (const std::uint32_t d : r->columns) reached[d] = 1;
+    }
+    renumbered[c] = static_cast<std::uint32_t>(step.columns++);
+    const std::int32_t* m = matrix.column_monomials.data() + c * w;
+    step.column_monomials.insert(step.column_monomials.end(), m, m + w);
+  }
+  auto traced = [&](const MatrixRow& r) {
+    Row row{r.poly, {}};
+    row.columns.reserve(r.size());
+    for (const std::uint32_t c : r.columns) row.columns.push_back(renumbered[c]);
+    return row;
+  };
+  for (const MatrixRow& r : matrix.pivots) {
+    if (reached[r.lead()] != 0) step.pivots.push_back(traced(r));
+  }
+  for (const std::size_t k : echelon.sources) step.to_reduce.push_back(traced(matrix.to_reduce[k]));
+  for (const MatrixRow& r : echelon.new_rows) step.new_leads.push_back(renumbered[r.lead()]);
+  steps_.push_back(std::move(step));
+}
+
+std::optional<F4Outcome> F4Trace::replay(const Ring& ring, const ModularArithmetic& arithmetic,
+                                         std::vector<ModPolynomial> generators, const Budget& budget,
+                                         BuchbergerStats& stats) const {
+  std::vector<ModPolynomial> basis;
+  for (auto& g : generators) {
+    if (!g.empty()) basis.push_back(std::move(g));
+  }
+  if (!complete_ || basis.size() != generators_) return std::nullopt;
+  const std::size_t w = ring.monomial_size();
+  for (const Step& step : steps_) {
+    budget.check("F4");
+    MacaulayMatrix matrix;
+    matrix.columns = step.columns;
+    auto with_coefficients = [&](const Row& r) {
+      MatrixRow row;
+      row.poly = r.poly;
+      row.columns = r.columns;
+      row.coefficients = basis[r.poly].coefficients.data();
+      return row;
+    };
+    for (const Row& r : step.pivots) matrix.pivots.push_back(with_coefficients(r));
+    for (const Row& r : step.to_reduce) matrix.to_reduce.push_back(with_coefficients(r));
+    EchelonResult echelon = reduce_to_row_echelon(matrix, arithmetic.modulus(), budget);
+    stats.reductions += matrix.to_reduce.size();
+    stats.reduction_steps += matrix.to_reduce.size();
+    stats.work += echelon.work;
+    if (echelon.new_rows.size() != step.new_leads.size()) return std::nullopt;
+    for (std::size_t k = 0; k < step.new_leads.size(); ++k) {
+      if (echelon.new_rows[k].lead() != step.new_leads[k]) return std::nullopt;
+    }
+    // As the learning run inserted them (f4_engine.cpp): by increasing leading column.
+    std::sort(echelon.new_rows.begin(), echelon.new_rows.end(),
+              [](const MatrixRow& a, const MatrixRow& b) { return a.lead() < b.lead(); });
+    for (const MatrixRow& row : echelon.new_rows) {
+      ModPolynomial g;
+      g.coefficients = row.owned;
+      g.monomials.reserve(row.size() * w);
+      for (const std::uint32_t c : row.columns) {
+        const std::int32_t* m = step.column_monomials.data() + std::size_t{c} * w;
+        g.monomials.insert(g.monomials.end(), m, m + w);
+      }
+      basis.push_back(std::move(g));
+    }
+  }
+  F4Outcome outcome;
+  for (const std::size_t i : minimal_basis_) {
+    if (i >= basis.size()) return std::nullopt;
+    outcome.basis.push_back(std::move(basis[i]));
+  }
+  return outcome;
+}
+
+}  // namespace implicitizer::detail

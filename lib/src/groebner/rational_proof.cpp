@@ -1,0 +1,295 @@
+#include "rational_proof.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <map>
+
+#include "growing_basis.hpp"
+#include "implicitizer/modular/flint_handles.hpp"
+#include "implicitizer/modular/one_per_thread.hpp"
+#include "macaulay_rows.hpp"
+#include "s_pair_queue.hpp"
+
+namespace implicitizer::detail {
+
+namespace {
+
+constexpr const char* kWhere = "the proof over Q";
+
+// Fraction-free steps between two divisions of a row by the gcd of its entries: the
+// scalings multiply every entry by a leading coefficient, and dividing the content
+// out keeps the entries near the size of the true remainder's.
+constexpr std::size_t kStepsBetweenContent = 8;
+
+// The S-pairs of `basis` that Gebauer–Möller's update (and the product criterion)
+// leave, as the Buchberger engine would reduce them on a candidate whose every
+// S-polynomial reduces to zero: then no element is added, so these are all its pairs.
+std::vector<SPair> criterion_pairs(const Ring& ring, const std::vector<IntPolynomial>& basis,
+                                   const BuchbergerParams& params) {
+  BuchbergerStats stats;
+  SPairQueue queue(ring, params, stats);
+  GrowingBasis<IntPolynomial> entries(ring, queue);
+  entries.insert_generators(basis, params.budget, "the proof over Q (the pairs)");
+  std::vector<SPair> pairs;
+  for (SPair pair; queue.pop(entries.entries(), pair);) pairs.push_back(std::move(pair));
+  return pairs;
+}
+
+std::vector<Fmpz> to_fmpz(const std::vector<Integer>& values) {
+  std::vector<Fmpz> out(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) fmpz_set_mpz(out[i].get(), values[i].get_mpz_t());
+  return out;
+}
+
+// One polynomial to check: the S-polynomial of basis elements i and j, or generator i.
+struct Check {
+  bool is_pair = false;
+  std::size_t i = 0, j = 0;
+};
+
+// A row of a degree's matrix: basis element `poly` times a monomial, by column.
+struct ProofRow {
+  std::size_t poly = 0;
+  std::vector<std::uint32_t> columns;  // increasing (monomials decreasing)
+};
+
+// One degree's matrix: the multiples of basis elements, the pivot of each column,
+// and each check as rows (a pair: its two halves; a generator: its own columns).
+struct ProofMatrix {
+  std::vector<ProofRow> rows;
+  std::vector<std::int64_t> pivot_of;                         // per column: index into rows, or -1
+  std::vector<std::size_t> first_half, second_half;           // per check (pairs)
+  std::vector<std::vector<std::uint32_t>> generator_columns;  // per check (generators)
+};
+
+ProofMatrix build_proof_matrix(const Ring& ring, const std::vector<IntPolynomial>& generators,
+                               const std::vector<IntPolynomial>& basis,
+                               const std::vector<BasicReducer<IntPolynomial>>& reducers,
+                               const std::vector<Check>& checks, const Budget& budget) {
+  const std::size_t w = ring.monomial_size();
+  RowCollector<IntPolynomial> collector(ring, basis, budget, kWhere);
+  ProofMatrix matrix;
+  matrix.first_half.resize(checks.size());
+  matrix.second_half.resize(checks.size());
+  matrix.generator_columns.resize(checks.size());
+  std::vector<std::int32_t> lcm(w), shift(w);
+  for (std::size_t k = 0; k < checks.size(); ++k) {
+    const Check& check = checks[k];
+    if (check.is_pair) {
+      const IntPolynomial& f = basis[check.i];
+      const IntPolynomial& g = basis[check.j];
+      ring.lcm(f.monomials.data(), g.monomials.data(), lcm.data());
+      ring.divide(lcm.data(), f.monomials.data(), shift.data());
+      matrix.first_half[k] = collector.add(check.i, shift.data());
+      ring.divide(lcm.data(), g.monomials.data(), shift.data());
+      matrix.second_half[k] = collector.add(check.j, shift.data());
+    } else {
+      const IntPolynomial& h = generators[check.i];
+      budget.check_terms(h.size(), kWhere);
+      for (std::size_t t = 0; t < h.size(); ++t) {
+        matrix.generator_columns[k].push_back(collector.table().insert(h.monomials.data() + t * w));
+      }
+    }
+  }
+  collector.add_reducers(reducers);
+  const std::vector<std::uint32_t> order = ids_in_decreasing_order(ring, collector.table());
+  std::vector<std::uint32_t> column_of(order.size());
+  for (std::size_t c = 0; c < order.size(); ++c) column_of[order[c]] = static_cast<std::uint32_t>(c);
+  matrix.pivot_of.assign(order.size(), -1);
+  for (PendingRow& pending : collector.rows()) {
+    ProofRow row;
+    row.poly = pending.poly;
+    row.columns.resize(pending.ids.size());
+    // Multiplying by a monomial keeps the order: the columns come out increasing.
+    for (std::size_t t = 0; t < row.columns.size(); ++t) row.columns[t] = column_of[pending.ids[t]];
+    std::int64_t& p = matrix.pivot_of[row.columns.front()];
+    // The shortest row with that leading column: the cheapest to subtract.
+    if (p < 0 || matrix.rows[static_cast<std::size_t>(p)].columns.size() > row.columns.size()) {
+      p = static_cast<std::int64_t>(matrix.rows.size());
+    }
+    matrix.rows.push_back(std::move(row));
+  }
+  for (auto& columns : matrix.generator_columns) {
+    for (auto& id : columns) id = column_of[id];
+  }
+  return matrix;
+}
+
+// Fraction-free elimination of one row over ℤ against a degree's pivots, in a dense
+// accumulator that is all zero before and, when the row reduces to zero, after.
+class RowReducer {
+ public:
+  RowReducer(const std::vector<std::vector<Fmpz>>& basis_coefficients, const Budget& budget)
+      : coefficients_(basis_coefficients), budget_(budget) {}
+
+  // Sizes the accumulator for a matrix of `columns` columns.
+  void resize(std::size_t columns) {
+    if (row_.size() < columns) row_.resize(columns);
+  }
+
+  // fa·row_a − ga·row_b with fa, ga making the leading terms cancel: the
+  // S-polynomial of a pair (both rows lead the same column).
+  void load_pair(const ProofRow& a, const ProofRow& b) {
+    const fmpz* lc_a = coefficients_[a.poly].front().get();
+    const fmpz* lc_b = coefficients_[b.poly].front().get();
+    fmpz_gcd(gcd_.get(), lc_a, lc_b);
+    fmpz_divexact(scale_.get(), lc_b, gcd_.get());
+    fmpz_divexact(factor_.get(), lc_a, gcd_.get());
+    add_multiple(a, scale_.get(), 1);
+    fmpz_neg(factor_.get(), factor_.get());
+    add_multiple(b, factor_.get(), 1);
+    first_ = a.columns.front() + 1;
+    last_ = std::max(a.columns.back(), b.columns.back());
+  }
+
+  // A generator's coefficients at its columns.
+  void load_generator(const std::vector<Fmpz>& values, const std::vector<std::uint32_t>& columns) {
+    for (std::size_t t = 0; t < columns.size(); ++t) fmpz_set(row_[columns[t]].get(), values[t].get());
+    first_ = *std::min_element(columns.begin(), columns.end());
+    last_ = *std::max_element(columns.begin(), columns.end());
+  }
+
+  // Eliminates the loaded row left to right; false at the first non-zero entry whose
+  // column has no pivot (the row's normal form is not zero).
+  bool reduces_to_zero(const ProofMatrix& matrix) {
+    std::size_t scaled_steps = 0;
+    for (std::size_t c = first_; c <= last_; ++c) {
+      fmpz* lead = row_[c].get();
+      if (fmpz_is_zero(lead)) continue;
+      const std::int64_t p = matrix.pivot_of[c];
+      if (p < 0) {
+        clear(c);
+        return false;
+      }
+      const ProofRow& pivot = matrix.rows[static_cast<std::size_t>(p)];
+      const fmpz* lc = coefficients_[pivot.poly].front().get();
+      // row ← (lc/d)·row − (lead/d)·pivot, d = gcd(lead, lc).
+      fmpz_gcd(gcd_.get(), lead, lc);
+      fmpz_divexact(scale_.get(), lc, gcd_.get());
+      fmpz_divexact(factor_.get(), lead, gcd_.get());
+      fmpz_zero(lead);
+      std::uint64_t work = kWorkPerStep + kWorkPerTerm * pivot.columns.size();
+      const bool scaled = !fmpz_is_one(scale_.get());
+      if (scaled) {
+        for (std::size_t k = c + 1; k <= last_; ++k) {
+          if (!fmpz_is_zero(row_[k].get())) fmpz_mul(row_[k].get(), row_[k].get(), scale_.get());
+        }
+        work += kWorkPerTerm * (last_ - c);
+      }
+      fmpz_neg(factor_.get(), factor_.get());
+      add_multiple(pivot, factor_.get(), 1);
+      last_ = std::max<std::size_t>(last_, pivot.columns.back());
+      budget_.charge_work(work, kWhere);
+      if (scaled && ++scaled_steps % kStepsBetweenContent == 0) {
+        remove_content(c + 1);
+        budget_.check(kWhere);
+      }
+    }
+    return true;
+  }
+
+ private:
+  // row += factor·(the pivot row's coefficients), from term `from` on.
+  void add_multiple(const ProofRow& r, const fmpz* factor, std::size_t from) {
+    const std::vector<Fmpz>& values = coefficients_[r.poly];
+    for (std::size_t t = from; t < r.columns.size(); ++t) {
+      fmpz_addmul(row_[r.columns[t]].get(), factor, values[t].get());
+    }
+  }
+
+  void remove_content(std::size_t from) {
+    fmpz_zero(gcd_.get());
+    for (std::size_t k = from; k <= last_ && !fmpz_is_one(gcd_.get()); ++k) {
+      if (!fmpz_is_zero(row_[k].get())) fmpz_gcd(gcd_.get(), gcd_.get(), row_[k].get());
+    }
+    if (fmpz_is_zero(gcd_.get()) || fmpz_is_one(gcd_.get())) return;
+    for (std::size_t k = from; k <= last_; ++k) {
+      if (!fmpz_is_zero(row_[k].get())) fmpz_divexact(row_[k].get(), row_[k].get(), gcd_.get());
+    }
+  }
+
+  // Zeroes the accumulator from column `from` on (a refuted row leaves entries).
+  void clear(std::size_t from) {
+    for (std::size_t k = from; k <= last_; ++k) fmpz_zero(row_[k].get());
+  }
+
+  const std::vector<std::vector<Fmpz>>& coefficients_;
+  const Budget& budget_;
+  std::vector<Fmpz> row_;
+  std::size_t first_ = 0, last_ = 0;
+  Fmpz gcd_, scale_, factor_;
+};
+
+// The degree of a check's leading monomial: the checks of one degree share a matrix.
+std::int32_t check_degree(const Ring& ring, const Check& check, const std::vector<IntPolynomial>& generators,
+                          const std::vector<SPair>& pairs, std::size_t pair) {
+  return check.is_pair ? pairs[pair].lcm_degree : ring.total_degree(generators[check.i].monomials.data());
+}
+
+}  // namespace
+
+ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynomial>& generators,
+                                  const std::vector<IntPolynomial>& basis, const BuchbergerParams& params,
+                                  std::size_t threads) {
+  const Budget& budget = params.budget;
+  const std::vector<SPair> pairs = criterion_pairs(ring, basis, params);
+  std::vector<BasicReducer<IntPolynomial>> reducers;
+  for (const auto& g : basis) reducers.push_back({&g, ring.divisor_mask(g.monomials.data()), 0});
+  std::vector<std::vector<Fmpz>> basis_coefficients, generator_coefficients;
+  for (const auto& g : basis) basis_coefficients.push_back(to_fmpz(g.coefficients));
+  for (const auto& h : generators) generator_coefficients.push_back(to_fmpz(h.coefficients));
+
+  std::map<std::int32_t, std::vector<Check>> by_degree;
+  for (std::size_t i = 0; i < generators.size(); ++i) {
+    if (generators[i].empty()) continue;
+    const Check check{false, i, 0};
+    by_degree[check_degree(ring, check, generators, pairs, 0)].push_back(check);
+  }
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const Check check{true, pairs[k].i, pairs[k].j};
+    by_degree[check_degree(ring, check, generators, pairs, k)].push_back(check);
+  }
+
+  ProofOutcome outcome;
+  outcome.pairs = pairs.size();
+  const std::size_t total = generators.size() + pairs.size();
+  std::size_t done_before = 0;
+  std::atomic<bool> stop = false, refuted = false;
+  std::vector<RowReducer> reducers_per_thread;
+  for (std::size_t t = 0; t < std::max<std::size_t>(threads, 1); ++t) {
+    reducers_per_thread.emplace_back(basis_coefficients, budget);
+  }
+  for (const auto& [degree, checks] : by_degree) {
+    const ProofMatrix matrix = build_proof_matrix(ring, generators, basis, reducers, checks, budget);
+    std::atomic<std::size_t> next = 0;
+    const std::size_t workers = std::min(reducers_per_thread.size(), checks.size());
+    run_one_per_thread(workers, [&](std::size_t t) {
+      RowReducer& reducer = reducers_per_thread[t];
+      reducer.resize(matrix.pivot_of.size());
+      try {
+        for (std::size_t k; !stop.load(std::memory_order_relaxed) && (k = next.fetch_add(1)) < checks.size();) {
+          budget.check(kWhere);
+          if (checks[k].is_pair) {
+            reducer.load_pair(matrix.rows[matrix.first_half[k]], matrix.rows[matrix.second_half[k]]);
+          } else {
+            reducer.load_generator(generator_coefficients[checks[k].i], matrix.generator_columns[k]);
+          }
+          if (!reducer.reduces_to_zero(matrix)) {
+            refuted = true;
+            stop = true;
+          }
+          if (t == 0) budget.report_step(kWhere, done_before + k, total);
+        }
+      } catch (...) {
+        stop = true;  // the others stop at their next check; the error is rethrown
+        throw;
+      }
+    });
+    if (refuted) return outcome;
+    done_before += checks.size();
+  }
+  outcome.proven = true;
+  return outcome;
+}
+
+}  // namespace implicitizer::detail
