@@ -115,7 +115,7 @@ def test_interpolation_within_budget(s):
 
 
 def test_groebner_error_names_the_requests_limit(s):
-    # The error named auto's 0.1 s head start instead of the request's 1 s. Cyclic-7
+    # The error once named auto's head start instead of the request's 1 s. Cyclic-7
     # in lex by auto: Buchberger runs out of its head start, the modular computation
     # out of the request's second (both take minutes on any machine).
     variables = "abcdefg"

@@ -29,9 +29,11 @@ enum class GroebnerMethod {
 
 /// How long `auto` lets Buchberger's algorithm over ℚ run before it switches to the
 /// modular computation, in milliseconds of Buchberger's work
-/// (buchberger_work_of_milliseconds: the same allowance on every run, loaded or not;
-/// docs/algorithms.md has the measurements behind it).
-inline constexpr double kBuchbergerHeadStartMs = 100;
+/// (buchberger_work_of_milliseconds: the same allowance on every run, loaded or not).
+/// Short since F4 has a trace and the proof is by matrices: every ideal measured that
+/// needed more work than this was answered sooner by F4 (docs/algorithms.md, "F4
+/// modulo primes", `auto`'s rule).
+inline constexpr double kBuchbergerHeadStartMs = 5;
 
 /// Parses `auto`, `buchberger`, `modular` and `f4`; throws InputError `unknown_method`
 /// (field "method") otherwise.
