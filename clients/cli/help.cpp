@@ -94,7 +94,7 @@ options:
                         ideal intersected with the ring of the other variables, under
                         --order); the basis is then computed in an elimination order
                         for s,t (docs/cli.md); --json shows both
-  --method M            auto (default): Buchberger over Q for about 0.1 s of its work,
+  --method M            auto (default): Buchberger over Q for about 5 ms of its work,
                         then f4;
                         buchberger; modular: modulo primes, lifted, proven over Q;
                         f4: the same with F4 modulo each prime
