@@ -152,10 +152,13 @@ std::vector<ModPolynomial> ModularArithmetic::reduce_basis(std::vector<ModPolyno
   // Interreduce: each tail by the others (the leading terms are irreducible).
   std::vector<ModPolynomial> reduced(minimal.size());
   ReductionCounters counters;
+  std::vector<std::uint64_t> masks(minimal.size());
+  for (std::size_t j = 0; j < minimal.size(); ++j) masks[j] = ring_.divisor_mask(minimal[j].monomials.data());
+  std::vector<BasicReducer<ModPolynomial>> others;
   for (std::size_t i = 0; i < minimal.size(); ++i) {
-    std::vector<BasicReducer<ModPolynomial>> others;
+    others.clear();
     for (std::size_t j = 0; j < minimal.size(); ++j) {
-      if (j != i) others.push_back({&minimal[j], ring_.divisor_mask(minimal[j].monomials.data()), 0});
+      if (j != i) others.push_back({&minimal[j], masks[j], 0});
     }
     reduced[i] = reduce(minimal[i], others, true, budget, counters);
   }

@@ -320,7 +320,10 @@ class ModularDriver {
         candidate.reset();
       }
       if (candidate) {
-        if (confirms(*candidate, batch)) {
+        const Stopwatch check_timer;
+        const bool confirmed = confirms(*candidate, batch);
+        stats_.lift_ms += check_timer.elapsed_ms();
+        if (confirmed) {
           stats_.checking_primes = batch.size();
           if (!params_.prove) return *candidate;
           const Stopwatch timer;
@@ -341,10 +344,10 @@ class ModularDriver {
         stats_.checking_primes = 0;  // absorbed below, with the others
         candidate.reset();
       }
+      const Stopwatch timer;
       for (const PrimeRun& run : batch) {
         if (!run.replayed || trace_ != nullptr) absorb(run);  // replays of a dropped trace are not trusted
       }
-      const Stopwatch timer;
       BasisLift* majority = majority_lift();
       // Reconstruction costs about as much as one prime's Chinese remaindering of the
       // whole basis, and fails until the modulus passes the coefficients' size: try

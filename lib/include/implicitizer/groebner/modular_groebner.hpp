@@ -88,7 +88,7 @@ struct ModularGroebnerStats {
   std::size_t verification_pairs = 0;   ///< S-pairs reduced over ℚ by the proof
   std::size_t threads = 0;              ///< threads used for the primes
   double modular_ms = 0;                ///< wall time of the runs modulo primes
-  double lift_ms = 0;                   ///< of Chinese remaindering and reconstruction
+  double lift_ms = 0;                   ///< of Chinese remaindering, reconstruction and the check on further primes
   double verify_ms = 0;                 ///< of the proof over ℚ
   double dehomogenize_ms = 0;           ///< of h = 1 and the reduction of the affine basis over ℚ
   BuchbergerStats last_prime;           ///< the counters of one run modulo a prime
