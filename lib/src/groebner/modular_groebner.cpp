@@ -165,6 +165,11 @@ struct LiftedElement {
   CrtLift lift{0};
 
   void add(const ModPolynomial& g, std::uint64_t prime, const Ring& ring) {
+    // The usual case: the same support as the primes before (no coefficient vanished).
+    if (lift.size() == g.size() && monomials == g.monomials) {
+      lift.add(g.coefficients, prime);
+      return;
+    }
     const std::size_t w = ring.monomial_size();
     std::vector<std::int32_t> merged;
     std::vector<std::size_t> old_positions;  // where each lifted coefficient goes
