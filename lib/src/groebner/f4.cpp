@@ -4,6 +4,7 @@
 
 #include "buchberger_engine.hpp"
 #include "f4_engine.hpp"
+#include "f4_interreduce.hpp"
 #include "implicitizer/core/stopwatch.hpp"
 #include "int_polynomial.hpp"
 #include "mod_polynomial.hpp"
@@ -38,6 +39,9 @@ std::vector<detail::ModPolynomial> groebner_basis_modulo(const Ring& ring, const
     one.coefficients.push_back(1);
     one.monomials.assign(ring.monomial_size(), 0);
     return {std::move(one)};
+  }
+  if (algorithm == ModularAlgorithm::f4) {
+    return detail::reduce_basis_by_matrix(ring, arithmetic, std::move(outcome.basis), params.budget);
   }
   return arithmetic.reduce_basis(std::move(outcome.basis), params.budget);
 }

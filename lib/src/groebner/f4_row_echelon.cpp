@@ -92,4 +92,15 @@ EchelonResult reduce_to_row_echelon(const MacaulayMatrix& matrix, const nmod_t& 
   return result;
 }
 
+MatrixRow reduce_tail(const MatrixRow& row, const std::vector<const MatrixRow*>& pivot, std::vector<std::uint64_t>& acc,
+                      const nmod_t& modulus) {
+  MatrixRow out;
+  out.columns.push_back(row.lead());
+  out.owned.push_back(1);
+  for (std::size_t i = 1; i < row.size(); ++i) acc[row.columns[i]] = row.coefficients[i];
+  eliminate_dense<false>(acc, row.lead() + 1, pivot, modulus, out);
+  out.coefficients = out.owned.data();
+  return out;
+}
+
 }  // namespace implicitizer::detail

@@ -34,4 +34,11 @@ struct EchelonResult {
 // few rows and its term limit on every row produced. Throws LimitExceeded.
 EchelonResult reduce_to_row_echelon(const MacaulayMatrix& matrix, const nmod_t& modulus, const Budget& budget);
 
+// `row` (monic) with every column after its leading one eliminated by `pivot` (per
+// column, a monic row leading there, or nullptr); `acc` is a zero accumulator of
+// the matrix's width and is left zero. The tail reduction of F4's final
+// interreduction (f4_interreduce.hpp).
+MatrixRow reduce_tail(const MatrixRow& row, const std::vector<const MatrixRow*>& pivot, std::vector<std::uint64_t>& acc,
+                      const nmod_t& modulus);
+
 }  // namespace implicitizer::detail

@@ -134,8 +134,7 @@ ModPolynomial ModularArithmetic::reduce(ModPolynomial f, const std::vector<Basic
   return f;
 }
 
-std::vector<ModPolynomial> ModularArithmetic::reduce_basis(std::vector<ModPolynomial> basis,
-                                                           const Budget& budget) const {
+std::vector<ModPolynomial> ModularArithmetic::minimal_basis(std::vector<ModPolynomial> basis) const {
   std::sort(basis.begin(), basis.end(), [&](const ModPolynomial& a, const ModPolynomial& b) {
     return ring_.compare(a.monomials.data(), b.monomials.data()) < 0;
   });
@@ -149,6 +148,12 @@ std::vector<ModPolynomial> ModularArithmetic::reduce_basis(std::vector<ModPolyno
     });
     if (!divisible) minimal.push_back(std::move(g));
   }
+  return minimal;
+}
+
+std::vector<ModPolynomial> ModularArithmetic::reduce_basis(std::vector<ModPolynomial> basis,
+                                                           const Budget& budget) const {
+  std::vector<ModPolynomial> minimal = minimal_basis(std::move(basis));
   // Interreduce: each tail by the others (the leading terms are irreducible).
   std::vector<ModPolynomial> reduced(minimal.size());
   ReductionCounters counters;

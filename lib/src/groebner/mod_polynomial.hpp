@@ -45,6 +45,9 @@ class ModularArithmetic {
   // The reduced basis of the ideal of the Gröbner basis `basis`: minimal,
   // interreduced, monic, sorted by increasing leading monomial.
   std::vector<ModPolynomial> reduce_basis(std::vector<ModPolynomial> basis, const Budget& budget) const;
+  // The minimal basis of the Gröbner basis `basis` (no leading monomial divides
+  // another's), sorted by increasing leading monomial, not interreduced.
+  std::vector<ModPolynomial> minimal_basis(std::vector<ModPolynomial> basis) const;
 
  private:
   void make_monic(ModPolynomial& f) const;

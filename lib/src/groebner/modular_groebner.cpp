@@ -10,6 +10,7 @@
 
 #include "buchberger_engine.hpp"
 #include "f4_engine.hpp"
+#include "f4_interreduce.hpp"
 #include "f4_trace.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/core/stopwatch.hpp"
@@ -92,6 +93,15 @@ ModPolynomial dehomogenize_modulo(const ModPolynomial& f, const Ring& from, cons
   return out;
 }
 
+// The reduced basis of a Gröbner basis modulo p, as the run's algorithm makes it.
+std::vector<ModPolynomial> reduce_basis(const Ring& ring, const detail::ModularArithmetic& arithmetic,
+                                        std::vector<ModPolynomial> basis, const ModularGroebnerParams& params) {
+  if (params.algorithm == ModularAlgorithm::f4) {
+    return detail::reduce_basis_by_matrix(ring, arithmetic, std::move(basis), params.buchberger.budget);
+  }
+  return arithmetic.reduce_basis(std::move(basis), params.buchberger.budget);
+}
+
 // The reduced basis modulo `prime`: by replaying `trace` when there is one, recording
 // into `learn` when asked (F4 only).
 PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generators, std::uint64_t prime,
@@ -131,9 +141,9 @@ PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generator
     for (const auto& g : outcome.basis) {
       dehomogenized.push_back(dehomogenize_modulo(g, ring, lift_ring, arithmetic.modulus()));
     }
-    run.basis = affine.reduce_basis(std::move(dehomogenized), params.buchberger.budget);
+    run.basis = reduce_basis(lift_ring, affine, std::move(dehomogenized), params);
   } else {
-    run.basis = arithmetic.reduce_basis(std::move(outcome.basis), params.buchberger.budget);
+    run.basis = reduce_basis(ring, arithmetic, std::move(outcome.basis), params);
   }
   if (projection.free_of_first > 0) {
     std::erase_if(run.basis, [&](const ModPolynomial& g) {
