@@ -23,13 +23,23 @@ bool CrtLift::add(std::span<const mp_limb_t> residues, mp_limb_t p) {
   if (residues.size() != residues_.size()) throw std::invalid_argument("CrtLift::add: one residue per entry expected");
   check_values(residues, p);
   bool changed = false;
+  // What fmpz_CRT_ui computes on every call and depends only on the moduli: the
+  // inverse of the old modulus modulo p, p's precomputed inverse and the product.
+  Fmpz product;
+  mp_limb_t inverse = 0, p_inverse = 0;
+  if (primes_ > 0) {
+    inverse = n_invmod(fmpz_fdiv_ui(modulus_.get(), p), p);
+    p_inverse = n_preinvert_limb(p);
+    fmpz_mul_ui(product.get(), modulus_.get(), p);
+  }
   for (std::size_t i = 0; i < residues_.size(); ++i) {
-    // fmpz_CRT_ui wants a first modulus above 1: the first prime sets the residue.
+    // The CRT wants a first modulus above 1: the first prime sets the residue.
     if (primes_ == 0) {
       fmpz_set_ui(scratch_.get(), residues[i]);
       if (residues[i] > p / 2) fmpz_sub_ui(scratch_.get(), scratch_.get(), p);
     } else {
-      fmpz_CRT_ui(scratch_.get(), residues_[i].get(), modulus_.get(), residues[i], p, /*sign=*/1);
+      _fmpz_CRT_ui_precomp(scratch_.get(), residues_[i].get(), modulus_.get(), residues[i], p, p_inverse, product.get(),
+                           inverse, /*sign=*/1);
     }
     if (!fmpz_equal(scratch_.get(), residues_[i].get())) {
       changed = true;
