@@ -259,7 +259,10 @@ ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynom
   for (std::size_t t = 0; t < std::max<std::size_t>(threads, 1); ++t) {
     reducers_per_thread.emplace_back(basis_coefficients, budget);
   }
-  for (const auto& [degree, checks] : by_degree) {
+  for (const auto& degree_checks : by_degree) {
+    // A plain reference, not a structured binding: the lambda below captures it, which
+    // C++20 allows for bindings but clang 14 (the fuzz build) does not.
+    const std::vector<Check>& checks = degree_checks.second;
     const ProofMatrix matrix = build_proof_matrix(ring, generators, basis, reducers, checks, budget);
     std::atomic<std::size_t> next = 0;
     const std::size_t workers = std::min(reducers_per_thread.size(), checks.size());
