@@ -23,6 +23,13 @@ F4Outcome run_modular_algorithm(const Ring& ring, const ModularArithmetic& arith
   return F4Outcome{outcome.unit, std::move(outcome.basis)};
 }
 
+std::vector<ModPolynomial> reduce_modular_basis(const Ring& ring, const ModularArithmetic& arithmetic,
+                                                std::vector<ModPolynomial> basis, ModularAlgorithm algorithm,
+                                                const Budget& budget) {
+  if (algorithm == ModularAlgorithm::f4) return reduce_basis_by_matrix(ring, arithmetic, std::move(basis), budget);
+  return arithmetic.reduce_basis(std::move(basis), budget);
+}
+
 }  // namespace detail
 
 namespace {
@@ -40,10 +47,7 @@ std::vector<detail::ModPolynomial> groebner_basis_modulo(const Ring& ring, const
     one.monomials.assign(ring.monomial_size(), 0);
     return {std::move(one)};
   }
-  if (algorithm == ModularAlgorithm::f4) {
-    return detail::reduce_basis_by_matrix(ring, arithmetic, std::move(outcome.basis), params.budget);
-  }
-  return arithmetic.reduce_basis(std::move(outcome.basis), params.budget);
+  return detail::reduce_modular_basis(ring, arithmetic, std::move(outcome.basis), algorithm, params.budget);
 }
 
 }  // namespace

@@ -109,13 +109,7 @@ class F4Engine {
               [](const MatrixRow& a, const MatrixRow& b) { return a.lead() < b.lead(); });
     const std::size_t w = ring_.monomial_size();
     for (const MatrixRow& row : echelon.new_rows) {
-      ModPolynomial g;
-      g.coefficients = row.owned;
-      g.monomials.reserve(row.size() * w);
-      for (std::uint32_t c : row.columns) {
-        const std::int32_t* m = matrix.column_monomials.data() + std::size_t{c} * w;
-        g.monomials.insert(g.monomials.end(), m, m + w);
-      }
+      ModPolynomial g = row_polynomial(row, matrix.column_monomials, w);
       if (basis_.is_constant(g)) return true;
       basis_.insert(std::move(g), sugar);
     }

@@ -46,4 +46,11 @@ F4Outcome run_modular_algorithm(const Ring& ring, const ModularArithmetic& arith
                                 std::vector<ModPolynomial> generators, ModularAlgorithm algorithm,
                                 const BuchbergerParams& params, BuchbergerStats& stats);
 
+// The reduced basis of a Gröbner basis modulo p, as `algorithm` makes it: by one
+// Macaulay matrix after F4 (f4_interreduce.hpp), by polynomial reduction after
+// Buchberger (ModularArithmetic::reduce_basis). Defined in f4.cpp.
+std::vector<ModPolynomial> reduce_modular_basis(const Ring& ring, const ModularArithmetic& arithmetic,
+                                                std::vector<ModPolynomial> basis, ModularAlgorithm algorithm,
+                                                const Budget& budget);
+
 }  // namespace implicitizer::detail

@@ -24,23 +24,20 @@ std::vector<ModPolynomial> reduce_basis_by_matrix(const Ring& ring, const Modula
   for (std::size_t i = 0; i < minimal.size(); ++i) element_rows.push_back(collector.add(i, one.data()));
   collector.add_reducers(reducers);
 
-  const std::vector<std::uint32_t> order = ids_in_decreasing_order(ring, collector.table());
-  std::vector<std::uint32_t> column_of(order.size());
-  for (std::size_t c = 0; c < order.size(); ++c) column_of[order[c]] = static_cast<std::uint32_t>(c);
-  std::vector<MatrixRow> rows(collector.rows().size());
-  std::vector<const MatrixRow*> pivot(order.size(), nullptr);
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    const PendingRow& pending = collector.rows()[r];
-    MatrixRow& row = rows[r];
-    row.poly = pending.poly;
-    row.coefficients = minimal[pending.poly].coefficients.data();
-    // Multiplying by a monomial keeps the order: the columns come out increasing.
-    for (const std::uint32_t id : pending.ids) row.columns.push_back(column_of[id]);
-    const MatrixRow*& p = pivot[row.lead()];
-    if (p == nullptr || p->size() > row.size()) p = &row;
+  const MatrixColumns columns = number_columns(ring, collector.table());
+  const std::vector<std::int64_t> shortest = shortest_rows_by_lead(collector.rows(), collector.table().size());
+  std::vector<MatrixRow> rows;
+  rows.reserve(collector.rows().size());
+  for (const PendingRow& pending : collector.rows()) {
+    rows.push_back(numbered_row(pending, columns.of_id));
+    rows.back().coefficients = minimal[pending.poly].coefficients.data();
+  }
+  std::vector<const MatrixRow*> pivot(columns.of_id.size(), nullptr);
+  for (std::size_t id = 0; id < shortest.size(); ++id) {
+    if (shortest[id] >= 0) pivot[columns.of_id[id]] = &rows[static_cast<std::size_t>(shortest[id])];
   }
 
-  std::vector<std::uint64_t> acc(order.size(), 0);
+  std::vector<std::uint64_t> acc(columns.of_id.size(), 0);
   std::vector<ModPolynomial> reduced;
   reduced.reserve(minimal.size());
   for (std::size_t i = 0; i < minimal.size(); ++i) {
@@ -48,14 +45,7 @@ std::vector<ModPolynomial> reduce_basis_by_matrix(const Ring& ring, const Modula
     const MatrixRow out = reduce_tail(rows[element_rows[i]], pivot, acc, arithmetic.modulus());
     budget.charge_work(kWorkPerStep + kWorkPerModularTerm * out.size(), kWhere);
     budget.check_terms(out.size(), kWhere);
-    ModPolynomial g;
-    g.coefficients = out.owned;
-    g.monomials.reserve(out.size() * w);
-    for (const std::uint32_t c : out.columns) {
-      const std::int32_t* m = collector.table().monomial(order[c]);
-      g.monomials.insert(g.monomials.end(), m, m + w);
-    }
-    reduced.push_back(std::move(g));
+    reduced.push_back(row_polynomial(out, columns.monomials, w));
   }
   return reduced;
 }

@@ -8,39 +8,16 @@ namespace {
 
 constexpr const char* kWhere = "F4 symbolic preprocessing";
 
-// The columns: the table's monomials in decreasing order; column_of[id].
-std::vector<std::uint32_t> number_columns(const Ring& ring, const MonomialTable& table, MacaulayMatrix& matrix) {
-  const std::vector<std::uint32_t> order = ids_in_decreasing_order(ring, table);
-  const std::size_t w = ring.monomial_size();
-  std::vector<std::uint32_t> column_of(table.size());
-  matrix.columns = table.size();
-  matrix.column_monomials.resize(table.size() * w);
-  for (std::size_t c = 0; c < order.size(); ++c) {
-    column_of[order[c]] = static_cast<std::uint32_t>(c);
-    std::copy(table.monomial(order[c]), table.monomial(order[c]) + w, matrix.column_monomials.data() + c * w);
-  }
-  return column_of;
-}
-
-// Splits the rows into pivots (per leading column the shortest row: it costs least
-// to subtract) and rows to reduce.
-void split_rows(std::vector<PendingRow>& pending, const std::vector<std::uint32_t>& column_of,
+// Splits the rows into pivots (per leading column the shortest row) and rows to
+// reduce.
+void split_rows(const std::vector<PendingRow>& pending, std::size_t ids, const std::vector<std::uint32_t>& column_of,
                 const std::vector<ModPolynomial>& basis, MacaulayMatrix& matrix) {
-  std::vector<std::int64_t> pivot_of(matrix.columns, -1);  // index into `rows`
-  std::vector<MatrixRow> rows(pending.size());
+  const std::vector<std::int64_t> pivot_row = shortest_rows_by_lead(pending, ids);
   for (std::size_t r = 0; r < pending.size(); ++r) {
-    MatrixRow& row = rows[r];
-    row.columns.resize(pending[r].ids.size());
-    // Multiplying by a monomial keeps the order: the columns come out increasing.
-    for (std::size_t i = 0; i < row.columns.size(); ++i) row.columns[i] = column_of[pending[r].ids[i]];
-    row.poly = pending[r].poly;
+    MatrixRow row = numbered_row(pending[r], column_of);
     row.coefficients = basis[row.poly].coefficients.data();
-    std::int64_t& p = pivot_of[row.lead()];
-    if (p < 0 || rows[static_cast<std::size_t>(p)].size() > row.size()) p = static_cast<std::int64_t>(r);
-  }
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    const bool pivot = pivot_of[rows[r].lead()] == static_cast<std::int64_t>(r);
-    (pivot ? matrix.pivots : matrix.to_reduce).push_back(std::move(rows[r]));
+    const bool pivot = pivot_row[pending[r].ids.front()] == static_cast<std::int64_t>(r);
+    (pivot ? matrix.pivots : matrix.to_reduce).push_back(std::move(row));
   }
 }
 
@@ -62,10 +39,33 @@ MacaulayMatrix build_macaulay_matrix(const Ring& ring, const std::vector<ModPoly
     collector.add(pair.second, shift.data());
   }
   collector.add_reducers(reducers);
+  MatrixColumns columns = number_columns(ring, collector.table());
   MacaulayMatrix matrix;
-  const std::vector<std::uint32_t> column_of = number_columns(ring, collector.table(), matrix);
-  split_rows(collector.rows(), column_of, basis, matrix);
+  matrix.columns = columns.of_id.size();
+  matrix.column_monomials = std::move(columns.monomials);
+  split_rows(collector.rows(), collector.table().size(), columns.of_id, basis, matrix);
   return matrix;
+}
+
+MatrixRow numbered_row(const PendingRow& pending, const std::vector<std::uint32_t>& column_of) {
+  MatrixRow row;
+  row.poly = pending.poly;
+  row.columns.reserve(pending.ids.size());
+  // Multiplying by a monomial keeps the order: the columns come out increasing.
+  for (const std::uint32_t id : pending.ids) row.columns.push_back(column_of[id]);
+  return row;
+}
+
+ModPolynomial row_polynomial(const MatrixRow& row, const std::vector<std::int32_t>& column_monomials,
+                             std::size_t width) {
+  ModPolynomial g;
+  g.coefficients = row.owned;
+  g.monomials.reserve(row.size() * width);
+  for (const std::uint32_t c : row.columns) {
+    const std::int32_t* m = column_monomials.data() + std::size_t{c} * width;
+    g.monomials.insert(g.monomials.end(), m, m + width);
+  }
+  return g;
 }
 
 }  // namespace implicitizer::detail

@@ -50,6 +50,14 @@ struct SelectedPair {
   std::size_t first = 0, second = 0;
 };
 
+// The row of `pending` with its columns numbered by `column_of`; no coefficients yet.
+MatrixRow numbered_row(const PendingRow& pending, const std::vector<std::uint32_t>& column_of);
+
+// The polynomial of a row the echelon step produced (its `owned` coefficients), its
+// monomials read from `column_monomials` (`width` words per column).
+ModPolynomial row_polynomial(const MatrixRow& row, const std::vector<std::int32_t>& column_monomials,
+                             std::size_t width);
+
 // Builds the matrix of the selected pairs over `basis` (monic polynomials modulo a
 // prime); `reducers` lists the elements that may reduce (all of basis, redundant ones
 // included, as the Buchberger engine does). Checks `budget` as rows are added.

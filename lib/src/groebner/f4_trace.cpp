@@ -74,16 +74,7 @@ std::optional<F4Outcome> F4Trace::replay(const Ring& ring, const ModularArithmet
     // As the learning run inserted them (f4_engine.cpp): by increasing leading column.
     std::sort(echelon.new_rows.begin(), echelon.new_rows.end(),
               [](const MatrixRow& a, const MatrixRow& b) { return a.lead() < b.lead(); });
-    for (const MatrixRow& row : echelon.new_rows) {
-      ModPolynomial g;
-      g.coefficients = row.owned;
-      g.monomials.reserve(row.size() * w);
-      for (const std::uint32_t c : row.columns) {
-        const std::int32_t* m = step.column_monomials.data() + std::size_t{c} * w;
-        g.monomials.insert(g.monomials.end(), m, m + w);
-      }
-      basis.push_back(std::move(g));
-    }
+    for (const MatrixRow& row : echelon.new_rows) basis.push_back(row_polynomial(row, step.column_monomials, w));
   }
   F4Outcome outcome;
   for (const std::size_t i : minimal_basis_) {

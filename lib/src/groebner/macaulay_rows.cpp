@@ -46,12 +46,29 @@ std::uint32_t MonomialTable::insert(const std::int32_t* m) {
   return id;
 }
 
-std::vector<std::uint32_t> ids_in_decreasing_order(const Ring& ring, const MonomialTable& table) {
+MatrixColumns number_columns(const Ring& ring, const MonomialTable& table) {
   std::vector<std::uint32_t> order(table.size());
   std::iota(order.begin(), order.end(), 0u);
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t a, std::uint32_t b) { return ring.compare(table.monomial(a), table.monomial(b)) > 0; });
-  return order;
+  const std::size_t w = ring.monomial_size();
+  MatrixColumns columns;
+  columns.of_id.resize(table.size());
+  columns.monomials.resize(table.size() * w);
+  for (std::size_t c = 0; c < order.size(); ++c) {
+    columns.of_id[order[c]] = static_cast<std::uint32_t>(c);
+    std::copy(table.monomial(order[c]), table.monomial(order[c]) + w, columns.monomials.data() + c * w);
+  }
+  return columns;
+}
+
+std::vector<std::int64_t> shortest_rows_by_lead(const std::vector<PendingRow>& rows, std::size_t ids) {
+  std::vector<std::int64_t> shortest(ids, -1);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    std::int64_t& s = shortest[rows[r].ids.front()];
+    if (s < 0 || rows[static_cast<std::size_t>(s)].ids.size() > rows[r].ids.size()) s = static_cast<std::int64_t>(r);
+  }
+  return shortest;
 }
 
 }  // namespace implicitizer::detail

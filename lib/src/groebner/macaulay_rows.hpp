@@ -40,8 +40,14 @@ class MonomialTable {
   std::vector<std::uint32_t> slots_;   // id + 1, 0 when empty; size a power of two
 };
 
-// The table's ids in decreasing monomial order: the matrix's columns, left to right.
-std::vector<std::uint32_t> ids_in_decreasing_order(const Ring& ring, const MonomialTable& table);
+// A matrix's columns: the table's monomials in decreasing order, left to right.
+struct MatrixColumns {
+  std::vector<std::uint32_t> of_id;     // the column of each table id
+  std::vector<std::int32_t> monomials;  // monomial_size words per column
+};
+
+// Numbers the columns of the monomials in `table`.
+MatrixColumns number_columns(const Ring& ring, const MonomialTable& table);
 
 // A row before the columns are numbered: basis element `poly` times a monomial, as
 // the table ids of its terms (the leading one first).
@@ -49,6 +55,10 @@ struct PendingRow {
   std::size_t poly = 0;
   std::vector<std::uint32_t> ids;
 };
+
+// Per table id (of `ids`), the index in `rows` of the shortest row leading there, or
+// −1 where no row does: the pivot of that column, the cheapest to subtract.
+std::vector<std::int64_t> shortest_rows_by_lead(const std::vector<PendingRow>& rows, std::size_t ids);
 
 // Collects the rows of one matrix over `basis` (polynomials with `monomials` and
 // size(), terms decreasing): each multiple u·g at most once, and which monomials

@@ -10,7 +10,6 @@
 
 #include "buchberger_engine.hpp"
 #include "f4_engine.hpp"
-#include "f4_interreduce.hpp"
 #include "f4_trace.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/core/stopwatch.hpp"
@@ -93,15 +92,6 @@ ModPolynomial dehomogenize_modulo(const ModPolynomial& f, const Ring& from, cons
   return out;
 }
 
-// The reduced basis of a Gröbner basis modulo p, as the run's algorithm makes it.
-std::vector<ModPolynomial> reduce_basis(const Ring& ring, const detail::ModularArithmetic& arithmetic,
-                                        std::vector<ModPolynomial> basis, const ModularGroebnerParams& params) {
-  if (params.algorithm == ModularAlgorithm::f4) {
-    return detail::reduce_basis_by_matrix(ring, arithmetic, std::move(basis), params.buchberger.budget);
-  }
-  return arithmetic.reduce_basis(std::move(basis), params.buchberger.budget);
-}
-
 // The reduced basis modulo `prime`: by replaying `trace` when there is one, recording
 // into `learn` when asked (F4 only).
 PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generators, std::uint64_t prime,
@@ -141,9 +131,11 @@ PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generator
     for (const auto& g : outcome.basis) {
       dehomogenized.push_back(dehomogenize_modulo(g, ring, lift_ring, arithmetic.modulus()));
     }
-    run.basis = reduce_basis(lift_ring, affine, std::move(dehomogenized), params);
+    run.basis = detail::reduce_modular_basis(lift_ring, affine, std::move(dehomogenized), params.algorithm,
+                                             params.buchberger.budget);
   } else {
-    run.basis = reduce_basis(ring, arithmetic, std::move(outcome.basis), params);
+    run.basis = detail::reduce_modular_basis(ring, arithmetic, std::move(outcome.basis), params.algorithm,
+                                             params.buchberger.budget);
   }
   if (projection.free_of_first > 0) {
     std::erase_if(run.basis, [&](const ModPolynomial& g) {
@@ -336,16 +328,16 @@ class ModularDriver {
       }
       if (candidate) {
         const Stopwatch check_timer;
-        const bool confirmed = confirms(*candidate, batch);
+        std::vector<IntPolynomial> integers;
+        for (const auto& g : *candidate) integers.push_back(detail::to_int_polynomial(g));
+        const bool confirmed = confirms(*candidate, integers, batch);
         stats_.lift_ms += check_timer.elapsed_ms();
         if (confirmed) {
           stats_.checking_primes = batch.size();
           if (!params_.prove) return *candidate;
           const Stopwatch timer;
-          std::vector<IntPolynomial> basis;
-          for (const auto& g : *candidate) basis.push_back(detail::to_int_polynomial(g));
           const detail::ProofOutcome proof =
-              detail::prove_groebner_basis(*run_ring_, generators_, basis, params_.buchberger, threads_);
+              detail::prove_groebner_basis(*run_ring_, generators_, integers, params_.buchberger, threads_);
           stats_.verification_pairs += proof.pairs;
           stats_.verify_ms += timer.elapsed_ms();
           if (proof.proven) {
@@ -474,9 +466,9 @@ class ModularDriver {
 
   // Whether every prime of `batch` whose basis has the candidate's leading monomials
   // agrees with the candidate, and at least one does.
-  bool confirms(const std::vector<Polynomial>& candidate, const std::vector<PrimeRun>& batch) const {
-    std::vector<IntPolynomial> integers;
-    for (const auto& g : candidate) integers.push_back(detail::to_int_polynomial(g));
+  // `integers` is the candidate as primitive integer polynomials.
+  bool confirms(const std::vector<Polynomial>& candidate, const std::vector<IntPolynomial>& integers,
+                const std::vector<PrimeRun>& batch) const {
     std::size_t agreeing = 0;
     for (const PrimeRun& run : batch) {
       if (agrees_modulo(integers, run, *ring_)) {

@@ -92,21 +92,15 @@ ProofMatrix build_proof_matrix(const Ring& ring, const std::vector<IntPolynomial
     }
   }
   collector.add_reducers(reducers);
-  const std::vector<std::uint32_t> order = ids_in_decreasing_order(ring, collector.table());
-  std::vector<std::uint32_t> column_of(order.size());
-  for (std::size_t c = 0; c < order.size(); ++c) column_of[order[c]] = static_cast<std::uint32_t>(c);
-  matrix.pivot_of.assign(order.size(), -1);
-  for (PendingRow& pending : collector.rows()) {
+  const std::vector<std::uint32_t> column_of = number_columns(ring, collector.table()).of_id;
+  const std::vector<std::int64_t> shortest = shortest_rows_by_lead(collector.rows(), column_of.size());
+  matrix.pivot_of.assign(column_of.size(), -1);
+  for (std::size_t id = 0; id < column_of.size(); ++id) matrix.pivot_of[column_of[id]] = shortest[id];
+  for (const PendingRow& pending : collector.rows()) {
     ProofRow row;
     row.poly = pending.poly;
-    row.columns.resize(pending.ids.size());
     // Multiplying by a monomial keeps the order: the columns come out increasing.
-    for (std::size_t t = 0; t < row.columns.size(); ++t) row.columns[t] = column_of[pending.ids[t]];
-    std::int64_t& p = matrix.pivot_of[row.columns.front()];
-    // The shortest row with that leading column: the cheapest to subtract.
-    if (p < 0 || matrix.rows[static_cast<std::size_t>(p)].columns.size() > row.columns.size()) {
-      p = static_cast<std::int64_t>(matrix.rows.size());
-    }
+    for (const std::uint32_t id : pending.ids) row.columns.push_back(column_of[id]);
     matrix.rows.push_back(std::move(row));
   }
   for (auto& columns : matrix.generator_columns) {
@@ -220,12 +214,6 @@ class RowReducer {
   Fmpz gcd_, scale_, factor_;
 };
 
-// The degree of a check's leading monomial: the checks of one degree share a matrix.
-std::int32_t check_degree(const Ring& ring, const Check& check, const std::vector<IntPolynomial>& generators,
-                          const std::vector<SPair>& pairs, std::size_t pair) {
-  return check.is_pair ? pairs[pair].lcm_degree : ring.total_degree(generators[check.i].monomials.data());
-}
-
 }  // namespace
 
 ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynomial>& generators,
@@ -239,16 +227,12 @@ ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynom
   for (const auto& g : basis) basis_coefficients.push_back(to_fmpz(g.coefficients));
   for (const auto& h : generators) generator_coefficients.push_back(to_fmpz(h.coefficients));
 
+  // The checks of one degree (of their leading monomial) share a matrix.
   std::map<std::int32_t, std::vector<Check>> by_degree;
   for (std::size_t i = 0; i < generators.size(); ++i) {
-    if (generators[i].empty()) continue;
-    const Check check{false, i, 0};
-    by_degree[check_degree(ring, check, generators, pairs, 0)].push_back(check);
+    if (!generators[i].empty()) by_degree[ring.total_degree(generators[i].monomials.data())].push_back({false, i, 0});
   }
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const Check check{true, pairs[k].i, pairs[k].j};
-    by_degree[check_degree(ring, check, generators, pairs, k)].push_back(check);
-  }
+  for (const SPair& pair : pairs) by_degree[pair.lcm_degree].push_back({true, pair.i, pair.j});
 
   ProofOutcome outcome;
   outcome.pairs = pairs.size();
