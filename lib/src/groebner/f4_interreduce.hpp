@@ -8,8 +8,8 @@
 // and its own divides no monomial of its tail (they are smaller).
 //
 // Why a matrix: the polynomial interreduction (ModularArithmetic::reduce_basis)
-// merges term lists at every step and builds a reducer list per element; it was
-// about a third of a replayed prime's time (docs/algorithms.md, "F4 modulo primes").
+// merges term lists at every step and builds a reducer list per element
+// (docs/algorithms.md, "F4 modulo primes", item 8, has what it cost).
 
 #include <vector>
 
