@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <span>
+#include <string>
 #include <thread>
 #include <utility>
 
@@ -171,16 +173,70 @@ TEST(ModularGroebnerTest, EliminationLiftsOnlyTheEliminationIdeal) {
 TEST(ModularGroebnerTest, BudgetStopsIt) {
   const RingPtr ring = Ring::make({"u0", "u1", "u2", "u3", "u4", "u5", "u6"});
   ModularGroebnerParams params;
-  params.buchberger.budget.set_timeout(0.05);
+  // A nanosecond: spent before the first check on any machine, however fast (a
+  // deadline of milliseconds would make the verdict depend on the machine's speed).
+  params.buchberger.budget.set_timeout(1e-9);
   try {
     compute_groebner_basis_modular(testing::katsura(ring), params);
-    FAIL() << "Katsura-6 in 50 ms";
+    FAIL() << "Katsura-6 within a nanosecond";
   } catch (const LimitExceeded& e) {
     EXPECT_EQ(e.limit(), Limit::time);
   }
   params.buchberger.budget = Budget();
   params.buchberger.budget.cancel();
   EXPECT_THROW(compute_groebner_basis_modular(testing::katsura(ring), params), LimitExceeded);
+}
+
+// The proof over ℚ checks its budget between and within its row reductions: a work
+// allowance that runs out halfway through the proof stops it there, with the proof
+// named as the phase and its progress between none and all of its checks. Work, not
+// time: one thread charges the same units on every run, so the stop falls at the same
+// place on every machine.
+TEST(ModularGroebnerTest, AWorkAllowanceStopsTheProofHalfway) {
+  const RingPtr ring = Ring::make({"u0", "u1", "u2", "u3", "u4"});
+  const auto generators = testing::katsura(ring);
+  // The stop, if any, under an allowance of `units` (0: none, the work is counted).
+  struct Stop {
+    bool stopped = false;
+    std::string message;
+    ProgressReport step;
+    std::uint64_t work = 0;
+  };
+  auto run = [&](std::uint64_t units) {
+    ModularGroebnerParams params;
+    params.algorithm = ModularAlgorithm::f4;
+    params.threads = 1;
+    params.buchberger.budget.set_max_work(units == 0 ? std::numeric_limits<std::uint64_t>::max() : units);
+    Stop stop;
+    try {
+      compute_groebner_basis_modular(generators, params);
+    } catch (const LimitExceeded& e) {
+      EXPECT_EQ(e.limit(), Limit::work);
+      stop.stopped = true;
+      stop.message = e.what();
+    }
+    stop.step = params.buchberger.budget.progress().step();
+    stop.work = params.buchberger.budget.work_done();
+    return stop;
+  };
+  const Stop whole = run(0);
+  ASSERT_FALSE(whole.stopped);
+  constexpr const char* kProof = "the proof over Q";
+  auto in_proof = [&](const Stop& s) { return s.stopped && s.message.find(kProof) != std::string::npos; };
+  // The least allowance that reaches the proof: every smaller one stops before it.
+  std::uint64_t before = 0, reaches = whole.work;
+  while (reaches - before > 1) {
+    const std::uint64_t middle = before + (reaches - before) / 2;
+    const Stop s = run(middle);
+    (s.stopped && !in_proof(s) ? before : reaches) = middle;
+  }
+  ASSERT_LT(reaches, whole.work);
+  const Stop halfway = run(reaches + (whole.work - reaches) / 2);
+  ASSERT_TRUE(in_proof(halfway)) << halfway.message;
+  ASSERT_NE(halfway.step.phase, nullptr);
+  EXPECT_STREQ(halfway.step.phase, kProof);
+  EXPECT_GT(halfway.step.done, 0u);
+  EXPECT_LT(halfway.step.done, halfway.step.total);
 }
 
 TEST(ModularGroebnerTest, OneThreadAndTwoGiveTheSameBasis) {
