@@ -45,8 +45,14 @@ std::uint64_t eliminate_dense(std::vector<std::uint64_t>& acc, std::uint32_t sta
         acc[cols[i]] = x >= p2 ? x - p2 : x;
       }
     } else {
+      // Shoup's multiplication: the factor is the same for the whole row, so its
+      // precomputed quotient turns each product modulo p into two multiplications and
+      // a correction, where nmod_mul needs a double-word product and a division step.
+      const std::uint64_t factor = p - v;
+      const std::uint64_t factor_quotient = n_mulmod_precomp_shoup(factor, p);
       for (std::size_t i = 1; i < n; ++i) {
-        acc[cols[i]] = nmod_sub(acc[cols[i]], nmod_mul(v, coefs[i], modulus), modulus);
+        const std::uint64_t x = acc[cols[i]] + n_mulmod_shoup(factor, coefs[i], factor_quotient, p);
+        acc[cols[i]] = x >= p ? x - p : x;
       }
     }
   }

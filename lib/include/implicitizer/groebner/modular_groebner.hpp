@@ -60,7 +60,8 @@ struct ModularGroebnerParams {
   /// dropped when a candidate is rejected). false: every prime runs in full.
   bool trace = true;
   /// 0: the primes just above 2^62 (PrimeSequence). Otherwise the primes from just
-  /// above this value: tests force small primes, unlucky ones among them.
+  /// above this value, which must stay below 2^62 (F4's arithmetic modulo p needs
+  /// p < 2^63): tests force small primes, unlucky ones among them.
   std::uint64_t first_prime = 0;
   /// Primes computed at once, one per thread (0: the hardware's cores).
   std::size_t threads = 0;
