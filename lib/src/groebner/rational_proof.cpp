@@ -5,7 +5,6 @@
 #include <map>
 
 #include "growing_basis.hpp"
-#include "implicitizer/modular/flint_handles.hpp"
 #include "implicitizer/modular/one_per_thread.hpp"
 #include "macaulay_rows.hpp"
 #include "s_pair_queue.hpp"
@@ -33,12 +32,6 @@ std::vector<SPair> criterion_pairs(const Ring& ring, const std::vector<IntPolyno
   std::vector<SPair> pairs;
   for (SPair pair; queue.pop(entries.entries(), pair);) pairs.push_back(std::move(pair));
   return pairs;
-}
-
-std::vector<Fmpz> to_fmpz(const std::vector<Integer>& values) {
-  std::vector<Fmpz> out(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) fmpz_set_mpz(out[i].get(), values[i].get_mpz_t());
-  return out;
 }
 
 // One polynomial to check: the S-polynomial of basis elements i and j, or generator i.
@@ -111,10 +104,12 @@ ProofMatrix build_proof_matrix(const Ring& ring, const std::vector<IntPolynomial
 
 // Fraction-free elimination of one row over ℤ against a degree's pivots, in a dense
 // accumulator that is all zero before and, when the row reduces to zero, after.
+// GMP integers rather than FLINT's: the entries are multi-limb after the first
+// scaling, and an mpz keeps its limbs when it is cleared, where an fmpz returns them
+// and takes them back at the next update.
 class RowReducer {
  public:
-  RowReducer(const std::vector<std::vector<Fmpz>>& basis_coefficients, const Budget& budget)
-      : coefficients_(basis_coefficients), budget_(budget) {}
+  RowReducer(const std::vector<IntPolynomial>& basis, const Budget& budget) : basis_(basis), budget_(budget) {}
 
   // Sizes the accumulator for a matrix of `columns` columns.
   void resize(std::size_t columns) {
@@ -124,21 +119,21 @@ class RowReducer {
   // fa·row_a − ga·row_b with fa, ga making the leading terms cancel: the
   // S-polynomial of a pair (both rows lead the same column).
   void load_pair(const ProofRow& a, const ProofRow& b) {
-    const fmpz* lc_a = coefficients_[a.poly].front().get();
-    const fmpz* lc_b = coefficients_[b.poly].front().get();
-    fmpz_gcd(gcd_.get(), lc_a, lc_b);
-    fmpz_divexact(scale_.get(), lc_b, gcd_.get());
-    fmpz_divexact(factor_.get(), lc_a, gcd_.get());
-    add_multiple(a, scale_.get(), 1);
-    fmpz_neg(factor_.get(), factor_.get());
-    add_multiple(b, factor_.get(), 1);
+    const mpz_srcptr lc_a = basis_[a.poly].coefficients.front().get_mpz_t();
+    const mpz_srcptr lc_b = basis_[b.poly].coefficients.front().get_mpz_t();
+    mpz_gcd(gcd_.get_mpz_t(), lc_a, lc_b);
+    mpz_divexact(scale_.get_mpz_t(), lc_b, gcd_.get_mpz_t());
+    mpz_divexact(factor_.get_mpz_t(), lc_a, gcd_.get_mpz_t());
+    add_multiple(a, scale_.get_mpz_t(), 1);
+    mpz_neg(factor_.get_mpz_t(), factor_.get_mpz_t());
+    add_multiple(b, factor_.get_mpz_t(), 1);
     first_ = a.columns.front() + 1;
     last_ = std::max(a.columns.back(), b.columns.back());
   }
 
   // A generator's coefficients at its columns.
-  void load_generator(const std::vector<Fmpz>& values, const std::vector<std::uint32_t>& columns) {
-    for (std::size_t t = 0; t < columns.size(); ++t) fmpz_set(row_[columns[t]].get(), values[t].get());
+  void load_generator(const IntPolynomial& h, const std::vector<std::uint32_t>& columns) {
+    for (std::size_t t = 0; t < columns.size(); ++t) row_[columns[t]] = h.coefficients[t];
     first_ = *std::min_element(columns.begin(), columns.end());
     last_ = *std::max_element(columns.begin(), columns.end());
   }
@@ -148,30 +143,31 @@ class RowReducer {
   bool reduces_to_zero(const ProofMatrix& matrix) {
     std::size_t scaled_steps = 0;
     for (std::size_t c = first_; c <= last_; ++c) {
-      fmpz* lead = row_[c].get();
-      if (fmpz_is_zero(lead)) continue;
+      const mpz_ptr lead = row_[c].get_mpz_t();
+      if (mpz_sgn(lead) == 0) continue;
       const std::int64_t p = matrix.pivot_of[c];
       if (p < 0) {
         clear(c);
         return false;
       }
       const ProofRow& pivot = matrix.rows[static_cast<std::size_t>(p)];
-      const fmpz* lc = coefficients_[pivot.poly].front().get();
+      const mpz_srcptr lc = basis_[pivot.poly].coefficients.front().get_mpz_t();
       // row ← (lc/d)·row − (lead/d)·pivot, d = gcd(lead, lc).
-      fmpz_gcd(gcd_.get(), lead, lc);
-      fmpz_divexact(scale_.get(), lc, gcd_.get());
-      fmpz_divexact(factor_.get(), lead, gcd_.get());
-      fmpz_zero(lead);
+      mpz_gcd(gcd_.get_mpz_t(), lead, lc);
+      mpz_divexact(scale_.get_mpz_t(), lc, gcd_.get_mpz_t());
+      mpz_divexact(factor_.get_mpz_t(), lead, gcd_.get_mpz_t());
+      mpz_set_ui(lead, 0);
       std::uint64_t work = kWorkPerStep + kWorkPerTerm * pivot.columns.size();
-      const bool scaled = !fmpz_is_one(scale_.get());
+      const bool scaled = mpz_cmp_ui(scale_.get_mpz_t(), 1) != 0;
       if (scaled) {
         for (std::size_t k = c + 1; k <= last_; ++k) {
-          if (!fmpz_is_zero(row_[k].get())) fmpz_mul(row_[k].get(), row_[k].get(), scale_.get());
+          const mpz_ptr entry = row_[k].get_mpz_t();
+          if (mpz_sgn(entry) != 0) mpz_mul(entry, entry, scale_.get_mpz_t());
         }
         work += kWorkPerTerm * (last_ - c);
       }
-      fmpz_neg(factor_.get(), factor_.get());
-      add_multiple(pivot, factor_.get(), 1);
+      mpz_neg(factor_.get_mpz_t(), factor_.get_mpz_t());
+      add_multiple(pivot, factor_.get_mpz_t(), 1);
       last_ = std::max<std::size_t>(last_, pivot.columns.back());
       budget_.charge_work(work, kWhere);
       if (scaled && ++scaled_steps % kStepsBetweenContent == 0) {
@@ -184,34 +180,36 @@ class RowReducer {
 
  private:
   // row += factor·(the pivot row's coefficients), from term `from` on.
-  void add_multiple(const ProofRow& r, const fmpz* factor, std::size_t from) {
-    const std::vector<Fmpz>& values = coefficients_[r.poly];
+  void add_multiple(const ProofRow& r, mpz_srcptr factor, std::size_t from) {
+    const std::vector<Integer>& values = basis_[r.poly].coefficients;
     for (std::size_t t = from; t < r.columns.size(); ++t) {
-      fmpz_addmul(row_[r.columns[t]].get(), factor, values[t].get());
+      mpz_addmul(row_[r.columns[t]].get_mpz_t(), factor, values[t].get_mpz_t());
     }
   }
 
   void remove_content(std::size_t from) {
-    fmpz_zero(gcd_.get());
-    for (std::size_t k = from; k <= last_ && !fmpz_is_one(gcd_.get()); ++k) {
-      if (!fmpz_is_zero(row_[k].get())) fmpz_gcd(gcd_.get(), gcd_.get(), row_[k].get());
+    const mpz_ptr g = gcd_.get_mpz_t();
+    mpz_set_ui(g, 0);
+    for (std::size_t k = from; k <= last_ && mpz_cmp_ui(g, 1) != 0; ++k) {
+      if (mpz_sgn(row_[k].get_mpz_t()) != 0) mpz_gcd(g, g, row_[k].get_mpz_t());
     }
-    if (fmpz_is_zero(gcd_.get()) || fmpz_is_one(gcd_.get())) return;
+    if (mpz_cmp_ui(g, 1) <= 0) return;
     for (std::size_t k = from; k <= last_; ++k) {
-      if (!fmpz_is_zero(row_[k].get())) fmpz_divexact(row_[k].get(), row_[k].get(), gcd_.get());
+      const mpz_ptr entry = row_[k].get_mpz_t();
+      if (mpz_sgn(entry) != 0) mpz_divexact(entry, entry, g);
     }
   }
 
   // Zeroes the accumulator from column `from` on (a refuted row leaves entries).
   void clear(std::size_t from) {
-    for (std::size_t k = from; k <= last_; ++k) fmpz_zero(row_[k].get());
+    for (std::size_t k = from; k <= last_; ++k) mpz_set_ui(row_[k].get_mpz_t(), 0);
   }
 
-  const std::vector<std::vector<Fmpz>>& coefficients_;
+  const std::vector<IntPolynomial>& basis_;
   const Budget& budget_;
-  std::vector<Fmpz> row_;
+  std::vector<Integer> row_;
   std::size_t first_ = 0, last_ = 0;
-  Fmpz gcd_, scale_, factor_;
+  Integer gcd_, scale_, factor_;
 };
 
 }  // namespace
@@ -223,9 +221,6 @@ ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynom
   const std::vector<SPair> pairs = criterion_pairs(ring, basis, params);
   std::vector<BasicReducer<IntPolynomial>> reducers;
   for (const auto& g : basis) reducers.push_back({&g, ring.divisor_mask(g.monomials.data()), 0});
-  std::vector<std::vector<Fmpz>> basis_coefficients, generator_coefficients;
-  for (const auto& g : basis) basis_coefficients.push_back(to_fmpz(g.coefficients));
-  for (const auto& h : generators) generator_coefficients.push_back(to_fmpz(h.coefficients));
 
   // The checks of one degree (of their leading monomial) share a matrix.
   std::map<std::int32_t, std::vector<Check>> by_degree;
@@ -241,7 +236,7 @@ ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynom
   std::atomic<bool> stop = false, refuted = false;
   std::vector<RowReducer> reducers_per_thread;
   for (std::size_t t = 0; t < std::max<std::size_t>(threads, 1); ++t) {
-    reducers_per_thread.emplace_back(basis_coefficients, budget);
+    reducers_per_thread.emplace_back(basis, budget);
   }
   for (const auto& degree_checks : by_degree) {
     // A plain reference, not a structured binding: the lambda below captures it, which
@@ -259,7 +254,7 @@ ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynom
           if (checks[k].is_pair) {
             reducer.load_pair(matrix.rows[matrix.first_half[k]], matrix.rows[matrix.second_half[k]]);
           } else {
-            reducer.load_generator(generator_coefficients[checks[k].i], matrix.generator_columns[k]);
+            reducer.load_generator(generators[checks[k].i], matrix.generator_columns[k]);
           }
           if (!reducer.reduces_to_zero(matrix)) {
             refuted = true;

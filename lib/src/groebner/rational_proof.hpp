@@ -8,7 +8,7 @@
 // are grouped by the degree of their leading monomial, and each group gets one
 // Macaulay matrix whose rows are the multiples u·g of candidate elements that
 // symbolic preprocessing finds (macaulay_rows.hpp), one pivot per column. Each
-// polynomial is then loaded into a dense row of FLINT integers and eliminated left
+// polynomial is then loaded into a dense row of GMP integers and eliminated left
 // to right, fraction-free. Top-reducing with one fixed reducer per monomial is a
 // reduction like any other: if the candidate is a Gröbner basis, every element of
 // its ideal reduces to zero whichever reducers are chosen, and a reduction to zero
