@@ -1,6 +1,7 @@
 #include "implicitizer/groebner/modular_groebner.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <map>
 #include <memory>
 #include <optional>
@@ -200,10 +201,15 @@ struct LiftedElement {
 };
 
 // Chinese remaindering of the reduced bases of the primes that share one set of
-// leading monomials.
+// leading monomials. The elements are independent, so the remaindering and the
+// reconstruction are shared by the driver's threads, which would otherwise wait for
+// them: element e always goes to thread e mod threads. Handing each element to
+// whichever thread was free instead made the remaindering slower than on one thread,
+// the elements' integers then changing threads (and allocator arenas) from prime to
+// prime.
 class BasisLift {
  public:
-  explicit BasisLift(const Ring& ring) : ring_(ring) {}
+  BasisLift(const Ring& ring, std::size_t threads) : ring_(ring), threads_(std::max<std::size_t>(threads, 1)) {}
 
   std::size_t primes() const { return primes_; }
   std::size_t first_seen() const { return first_seen_; }
@@ -211,27 +217,42 @@ class BasisLift {
 
   void add(const std::vector<ModPolynomial>& basis, std::uint64_t prime) {
     if (elements_.empty()) elements_.resize(basis.size());
-    for (std::size_t e = 0; e < basis.size(); ++e) elements_[e].add(basis[e], prime, ring_);
+    run_one_per_thread(std::min(threads_, basis.size()), [&](std::size_t t) {
+      for (std::size_t e = t; e < basis.size(); e += threads_) elements_[e].add(basis[e], prime, ring_);
+    });
     ++primes_;
   }
 
   // Rational reconstruction of every coefficient; the candidate basis, or nullopt
-  // at the first coefficient that has none.
+  // when a coefficient has none (each thread stops at its first failure, and at the
+  // next element once another thread failed).
   std::optional<std::vector<Polynomial>> reconstruct(const RingPtr& ring) {
-    std::vector<Polynomial> out;
+    std::vector<std::vector<Integer>> values(elements_.size());
+    std::atomic<bool> failed = false;
+    run_one_per_thread(std::min(threads_, elements_.size()), [&](std::size_t t) {
+      for (std::size_t e = t; e < elements_.size() && !failed.load(std::memory_order_relaxed); e += threads_) {
+        if (!elements_[e].lift.reconstruct()) {
+          failed = true;
+          return;
+        }
+        values[e] = elements_[e].lift.integer_values();
+      }
+    });
+    if (failed) return std::nullopt;
     const std::size_t w = ring_.monomial_size();
-    for (auto& e : elements_) {
-      if (!e.lift.reconstruct()) return std::nullopt;
-      std::vector<Integer> values = e.lift.integer_values();
+    std::vector<Polynomial> out;
+    for (std::size_t e = 0; e < elements_.size(); ++e) {
+      const LiftedElement& element = elements_[e];
       std::vector<Integer> coefficients;
       std::vector<std::int32_t> monomials;
-      for (std::size_t i = 0; i < values.size(); ++i) {
-        if (values[i] == 0) continue;
-        coefficients.push_back(std::move(values[i]));
-        monomials.insert(monomials.end(), e.monomials.begin() + static_cast<long>(i * w),
-                         e.monomials.begin() + static_cast<long>((i + 1) * w));
+      for (std::size_t i = 0; i < values[e].size(); ++i) {
+        if (values[e][i] == 0) continue;
+        coefficients.push_back(std::move(values[e][i]));
+        monomials.insert(monomials.end(), element.monomials.begin() + static_cast<long>(i * w),
+                         element.monomials.begin() + static_cast<long>((i + 1) * w));
       }
-      out.push_back(Polynomial::from_terms(ring, to_rational(Integer(1)) / to_rational(e.lift.common_denominator()),
+      out.push_back(Polynomial::from_terms(ring,
+                                           to_rational(Integer(1)) / to_rational(element.lift.common_denominator()),
                                            std::move(coefficients), std::move(monomials)));
     }
     return out;
@@ -239,6 +260,7 @@ class BasisLift {
 
  private:
   const Ring& ring_;
+  std::size_t threads_;
   std::vector<LiftedElement> elements_;
   std::size_t primes_ = 0;
   std::size_t first_seen_ = 0;
@@ -440,7 +462,7 @@ class ModularDriver {
     const std::vector<std::int32_t> key = leading_key(*ring_, run.basis);
     auto it = lifts_.find(key);
     if (it == lifts_.end()) {
-      it = lifts_.emplace(key, BasisLift(*ring_)).first;
+      it = lifts_.emplace(key, BasisLift(*ring_, threads_)).first;
       it->second.set_first_seen(lifts_.size());
     }
     it->second.add(run.basis, run.prime);
