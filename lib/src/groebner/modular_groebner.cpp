@@ -34,6 +34,10 @@ using detail::ModPolynomial;
 // settles), reported as a size limit rather than a loop.
 constexpr std::size_t kMaxPrimes = 2000;
 
+// Primes after which a batch runs in full although a trace could replay it (the
+// driver's run() says why); the next such point is four times further.
+constexpr std::size_t kFirstAudit = 16;
+
 // A prime is worth a thread of its own when it takes longer than this.
 constexpr double kThreadWorthMs = 20;
 
@@ -340,10 +344,27 @@ class ModularDriver {
   // The lifted basis, checked on one more prime and, with `prove`, proven.
   std::vector<Polynomial> run() {
     std::optional<std::vector<Polynomial>> candidate;
+    bool rejected = false;  // the last batch's candidate
     for (;;) {
-      // A candidate is checked on primes run in full, never on replays of the trace
-      // the candidate may have come from.
-      const std::vector<PrimeRun> batch = next_batch(!candidate.has_value());
+      // A candidate is confirmed on further primes before the proof. Without the proof
+      // they run in full: a replay follows the learned prime's path and cannot see a
+      // row that does not reduce to zero modulo its own prime, so it could confirm what
+      // it was built from. With the proof they are replays when the candidate has the
+      // learned prime's leading monomials (a replay costs about an eighth of a full run
+      // on cyclic-7): the proof's Hilbert-function argument needs one prime whose
+      // reduced basis, computed in full, has the candidate's leading monomials, and the
+      // learned prime is one; the confirmation only filters out a spurious
+      // reconstruction, which an independent prime refutes as well replayed as in full.
+      // The batch after a rejected candidate runs in full: replays of a path learned on
+      // an unlucky prime never fail, and only a full run shows that the path is wrong
+      // (leaves_trace). So does one batch each time the primes pass 16·4^k: the lift
+      // then mixes the learned prime's basis with replays of another object, and may
+      // never give a candidate to reject (a test learns on such a prime).
+      const bool audit = trace_ != nullptr && stats_.primes >= next_audit_;
+      if (audit) next_audit_ *= 4;
+      const bool replay = !rejected && !audit && (!candidate || (params_.prove && has_learned_leads(*candidate)));
+      const std::vector<PrimeRun> batch = next_batch(replay);
+      rejected = false;
       if (trace_ != nullptr && leaves_trace(batch)) {
         drop_trace();
         candidate.reset();
@@ -366,12 +387,14 @@ class ModularDriver {
             stats_.proven = true;
             return *candidate;
           }
-          // Confirmed on full runs yet not a Gröbner basis: start again without replays.
+          // Confirmed yet not a Gröbner basis: replays or the learned prime misled the lift;
+          // start again without replays.
           if (trace_ != nullptr) drop_trace();
         }
         ++stats_.rejected_candidates;
         stats_.checking_primes = 0;  // absorbed below, with the others
         candidate.reset();
+        rejected = true;
       }
       const Stopwatch timer;
       for (const PrimeRun& run : batch) {
@@ -449,6 +472,20 @@ class ModularDriver {
                        [&](const PrimeRun& r) { return !r.replayed && leading_key(*ring_, r.basis) != trace_key_; });
   }
 
+  // Whether `candidate` has the leading monomials of the basis the trace was learned
+  // from (false without a trace).
+  bool has_learned_leads(const std::vector<Polynomial>& candidate) const {
+    const std::size_t w = ring_->monomial_size();
+    if (trace_ == nullptr || candidate.size() * w != trace_key_.size()) return false;
+    for (std::size_t e = 0; e < candidate.size(); ++e) {
+      if (!std::equal(trace_key_.begin() + static_cast<long>(e * w),
+                      trace_key_.begin() + static_cast<long>((e + 1) * w), candidate[e].leading_monomial())) {
+        return false;
+      }
+    }
+    return true;
+  }
+
   // Forgets the trace and every lift (some may hold replays); the primes from here on
   // run in full.
   void drop_trace() {
@@ -518,8 +555,9 @@ class ModularDriver {
   ModularGroebnerStats& stats_;
   PrimeSequence primes_;
   std::size_t threads_ = 1;
-  std::size_t batch_size_ = 1;           // primes per batch after the first (threads_ once a prime is worth a thread)
-  std::size_t next_reconstruction_ = 1;  // lifted primes needed before the next reconstruction
+  std::size_t batch_size_ = 1;            // primes per batch after the first (threads_ once a prime is worth a thread)
+  std::size_t next_reconstruction_ = 1;   // lifted primes needed before the next reconstruction
+  std::size_t next_audit_ = kFirstAudit;  // primes after which a batch runs in full despite a trace
   std::map<std::vector<std::int32_t>, BasisLift> lifts_;
   std::unique_ptr<const detail::F4Trace> trace_;  // the first prime's F4 run, replayed on the others
   std::vector<std::int32_t> trace_key_;           // the leading monomials that prime found
