@@ -28,7 +28,16 @@ std::vector<SPair> criterion_pairs(const Ring& ring, const std::vector<IntPolyno
   BuchbergerStats stats;
   SPairQueue queue(ring, params, stats);
   GrowingBasis<IntPolynomial> entries(ring, queue);
-  entries.insert_generators(basis, params.budget, "the proof over Q (the pairs)");
+  // The criteria read leading monomials only, and the candidate is homogeneous (its
+  // sugar is its leading degree): the leading terms stand for the elements, which
+  // spares copying every coefficient.
+  const std::size_t w = ring.monomial_size();
+  std::vector<IntPolynomial> leads(basis.size());
+  for (std::size_t i = 0; i < basis.size(); ++i) {
+    leads[i].coefficients.push_back(basis[i].coefficients.front());
+    leads[i].monomials.assign(basis[i].monomials.begin(), basis[i].monomials.begin() + static_cast<long>(w));
+  }
+  entries.insert_generators(std::move(leads), params.budget, "the proof over Q (the pairs)");
   std::vector<SPair> pairs;
   for (SPair pair; queue.pop(entries.entries(), pair);) pairs.push_back(std::move(pair));
   return pairs;

@@ -84,16 +84,15 @@ void SPairQueue::update_gebauer_moller(std::vector<BasisEntry>& basis, std::size
     return (a.lcm_mask & ~b.lcm_mask) == 0 && ring_.divides(a.lcm.data(), b.lcm.data());
   };
   // M and F: walk the new pairs; keep (i,t) if it is coprime (it then stands for its
-  // lcm class) or no other remaining new pair has an lcm dividing its lcm.
+  // lcm class) or no other remaining new pair (one not walked yet, or one kept) has an
+  // lcm dividing its lcm.
   std::vector<SPair> kept;
-  std::vector<bool> taken(fresh.size(), false);
   for (std::size_t a = 0; a < fresh.size(); ++a) {
-    taken[a] = true;
     bool drop = false;
     if (!coprime(fresh[a])) {
-      for (std::size_t b = 0; b < fresh.size() && !drop; ++b) {
+      for (std::size_t b = a + 1; b < fresh.size() && !drop; ++b) {
         examined(steps);
-        if (!taken[b] && lcm_divides(fresh[b], fresh[a])) drop = true;
+        if (lcm_divides(fresh[b], fresh[a])) drop = true;
       }
       for (std::size_t b = 0; b < kept.size() && !drop; ++b) {
         examined(steps);
