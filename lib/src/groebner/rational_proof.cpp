@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <map>
+#include <memory>
+#include <mutex>
 
 #include "growing_basis.hpp"
 #include "implicitizer/modular/one_per_thread.hpp"
@@ -240,45 +242,74 @@ ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynom
 
   ProofOutcome outcome;
   outcome.pairs = pairs.size();
-  const std::size_t total = generators.size() + pairs.size();
-  std::size_t done_before = 0;
-  std::atomic<bool> stop = false, refuted = false;
-  std::vector<RowReducer> reducers_per_thread;
-  for (std::size_t t = 0; t < std::max<std::size_t>(threads, 1); ++t) {
-    reducers_per_thread.emplace_back(basis, budget);
+  // The degrees in increasing order, their checks numbered one after the other. A
+  // degree's matrix is built by the first thread that needs it, or ahead of time by
+  // the first thread to reach the degree before it, while the others reduce: no
+  // thread waits for a matrix unless the degree before has no check left to take.
+  // Each is freed when its last check is done.
+  struct DegreeWork {
+    const std::vector<Check>* checks = nullptr;
+    std::size_t first = 0;  // the number of its first check
+    std::once_flag built;
+    std::atomic<bool> claimed_ahead = false;
+    std::unique_ptr<const ProofMatrix> matrix;
+    std::atomic<std::size_t> left = 0;  // checks not finished
+  };
+  std::vector<DegreeWork> degrees(by_degree.size());
+  std::size_t total = 0;
+  {
+    std::size_t g = 0;
+    for (const auto& degree_checks : by_degree) {
+      degrees[g].checks = &degree_checks.second;
+      degrees[g].first = total;
+      degrees[g].left = degree_checks.second.size();
+      total += degree_checks.second.size();
+      ++g;
+    }
   }
-  for (const auto& degree_checks : by_degree) {
-    // A plain reference, not a structured binding: the lambda below captures it, which
-    // C++20 allows for bindings but clang 14 (the fuzz build) does not.
-    const std::vector<Check>& checks = degree_checks.second;
-    const ProofMatrix matrix = build_proof_matrix(ring, generators, basis, reducers, checks, budget);
-    std::atomic<std::size_t> next = 0;
-    const std::size_t workers = std::min(reducers_per_thread.size(), checks.size());
-    run_one_per_thread(workers, [&](std::size_t t) {
-      RowReducer& reducer = reducers_per_thread[t];
-      reducer.resize(matrix.pivot_of.size());
-      try {
-        for (std::size_t k; !stop.load(std::memory_order_relaxed) && (k = next.fetch_add(1)) < checks.size();) {
-          budget.check(kWhere);
-          if (checks[k].is_pair) {
-            reducer.load_pair(matrix.rows[matrix.first_half[k]], matrix.rows[matrix.second_half[k]]);
-          } else {
-            reducer.load_generator(generators[checks[k].i], matrix.generator_columns[k]);
-          }
-          if (!reducer.reduces_to_zero(matrix)) {
-            refuted = true;
-            stop = true;
-          }
-          if (t == 0) budget.report_step(kWhere, done_before + k, total);
-        }
-      } catch (...) {
-        stop = true;  // the others stop at their next check; the error is rethrown
-        throw;
-      }
+  auto build = [&](DegreeWork& degree) {
+    std::call_once(degree.built, [&] {
+      degree.matrix = std::make_unique<const ProofMatrix>(
+          build_proof_matrix(ring, generators, basis, reducers, *degree.checks, budget));
     });
-    if (refuted) return outcome;
-    done_before += checks.size();
-  }
+  };
+  std::atomic<bool> stop = false, refuted = false;
+  std::atomic<std::size_t> next = 0;
+  const std::size_t workers = std::min(std::max<std::size_t>(threads, 1), total);
+  std::vector<RowReducer> reducers_per_thread;
+  for (std::size_t t = 0; t < workers; ++t) reducers_per_thread.emplace_back(basis, budget);
+  run_one_per_thread(workers, [&](std::size_t t) {
+    RowReducer& reducer = reducers_per_thread[t];
+    std::size_t g = 0;
+    try {
+      for (std::size_t k; !stop.load(std::memory_order_relaxed) && (k = next.fetch_add(1)) < total;) {
+        while (k >= degrees[g].first + degrees[g].checks->size()) ++g;
+        DegreeWork& degree = degrees[g];
+        build(degree);
+        if (g + 1 < degrees.size() && !degrees[g + 1].claimed_ahead.exchange(true)) build(degrees[g + 1]);
+        budget.check(kWhere);
+        const ProofMatrix& matrix = *degree.matrix;
+        const std::size_t c = k - degree.first;
+        const Check& check = (*degree.checks)[c];
+        reducer.resize(matrix.pivot_of.size());
+        if (check.is_pair) {
+          reducer.load_pair(matrix.rows[matrix.first_half[c]], matrix.rows[matrix.second_half[c]]);
+        } else {
+          reducer.load_generator(generators[check.i], matrix.generator_columns[c]);
+        }
+        if (!reducer.reduces_to_zero(matrix)) {
+          refuted = true;
+          stop = true;
+        }
+        if (--degree.left == 0) degree.matrix.reset();
+        if (t == 0) budget.report_step(kWhere, k, total);
+      }
+    } catch (...) {
+      stop = true;  // the others stop at their next check; the error is rethrown
+      throw;
+    }
+  });
+  if (refuted) return outcome;
   outcome.proven = true;
   return outcome;
 }
