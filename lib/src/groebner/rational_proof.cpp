@@ -17,10 +17,18 @@ namespace {
 
 constexpr const char* kWhere = "the proof over Q";
 
-// Fraction-free steps between two divisions of a row by the gcd of its entries: the
-// scalings multiply every entry by a leading coefficient, and dividing the content
-// out keeps the entries near the size of the true remainder's.
-constexpr std::size_t kStepsBetweenContent = 8;
+// A row is divided by the gcd of its entries only once its entries have outgrown the
+// candidate's largest coefficient this many times over (in bits), and again each time
+// they double after that. A scaling multiplies every entry by a factor, but the next
+// pivot's multiple breaks that common factor, so the content is seldom more than a
+// small number: dividing it out every 8 scaled steps cost more than it saved (docs/
+// algorithms.md, "F4 modulo primes", item 7). The threshold bounds the growth where
+// it would run away.
+constexpr std::size_t kContentGrowth = 8;
+
+// Reduction steps of one row between two budget checks (time, memory, cancellation;
+// the work allowance is charged at every step).
+constexpr std::size_t kStepsBetweenChecks = 64;
 
 // The S-pairs of `basis` that Gebauer–Möller's update (and the product criterion)
 // leave, as the Buchberger engine would reduce them on a candidate whose every
@@ -120,7 +128,9 @@ ProofMatrix build_proof_matrix(const Ring& ring, const std::vector<IntPolynomial
 // and takes them back at the next update.
 class RowReducer {
  public:
-  RowReducer(const std::vector<IntPolynomial>& basis, const Budget& budget) : basis_(basis), budget_(budget) {}
+  // `coefficient_bits`: the bits of the basis's largest coefficient.
+  RowReducer(const std::vector<IntPolynomial>& basis, std::size_t coefficient_bits, const Budget& budget)
+      : basis_(basis), content_bits_(kContentGrowth * coefficient_bits + 64), budget_(budget) {}
 
   // Sizes the accumulator for a matrix of `columns` columns.
   void resize(std::size_t columns) {
@@ -152,7 +162,8 @@ class RowReducer {
   // Eliminates the loaded row left to right; false at the first non-zero entry whose
   // column has no pivot (the row's normal form is not zero).
   bool reduces_to_zero(const ProofMatrix& matrix) {
-    std::size_t scaled_steps = 0;
+    std::size_t steps = 0;
+    std::size_t content_bits = content_bits_;
     for (std::size_t c = first_; c <= last_; ++c) {
       const mpz_ptr lead = row_[c].get_mpz_t();
       if (mpz_sgn(lead) == 0) continue;
@@ -181,10 +192,11 @@ class RowReducer {
       add_multiple(pivot, factor_.get_mpz_t(), 1);
       last_ = std::max<std::size_t>(last_, pivot.columns.back());
       budget_.charge_work(work, kWhere);
-      if (scaled && ++scaled_steps % kStepsBetweenContent == 0) {
+      if (scaled && mpz_sizeinbase(factor_.get_mpz_t(), 2) > content_bits) {
         remove_content(c + 1);
-        budget_.check(kWhere);
+        content_bits *= 2;
       }
+      if (++steps % kStepsBetweenChecks == 0) budget_.check(kWhere);
     }
     return true;
   }
@@ -217,6 +229,7 @@ class RowReducer {
   }
 
   const std::vector<IntPolynomial>& basis_;
+  std::size_t content_bits_;  // the entries' bits above which the content is first divided out
   const Budget& budget_;
   std::vector<Integer> row_;
   std::size_t first_ = 0, last_ = 0;
@@ -277,7 +290,12 @@ ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynom
   std::atomic<std::size_t> next = 0;
   const std::size_t workers = std::min(std::max<std::size_t>(threads, 1), total);
   std::vector<RowReducer> reducers_per_thread;
-  for (std::size_t t = 0; t < workers; ++t) reducers_per_thread.emplace_back(basis, budget);
+  std::size_t coefficient_bits = 0;
+  for (const auto& g : basis) {
+    for (const auto& c : g.coefficients)
+      coefficient_bits = std::max(coefficient_bits, mpz_sizeinbase(c.get_mpz_t(), 2));
+  }
+  for (std::size_t t = 0; t < workers; ++t) reducers_per_thread.emplace_back(basis, coefficient_bits, budget);
   run_one_per_thread(workers, [&](std::size_t t) {
     RowReducer& reducer = reducers_per_thread[t];
     std::size_t g = 0;
