@@ -1,0 +1,68 @@
+#!/usr/bin/env python3
+"""Times the proven elimination a mathematician posts to /v1/groebner: `groebner
+--method f4 --eliminate` on the elimination ideal of each public and hard surface
+(the `ideal I` of `implicitize --json`'s Singular script, as bench/groebner_auto.py
+reads it), with the split of the route's time from its JSON.
+
+    python3 bench/groebner_eliminations.py [--timeout S] [--min-seconds S]
+        [--bin build/bin/implicitizer] [--before OTHER/build/bin/implicitizer]
+
+Ideals that take under --min-seconds with --bin are left out of the table (the
+public surfaces take milliseconds). With --before, each ideal also runs with that
+binary (another commit's build), just before ours. Each run is a whole process; a
+run past --timeout prints "> T". Prints a Markdown table (docs/benchmarks.md records
+it with the command).
+"""
+
+import argparse
+import json
+import os
+import subprocess
+import time
+
+from groebner_auto import ROOT, surface_ideals
+
+
+def eliminate(binary, variables, polys, eliminated, timeout):
+    """(seconds, the JSON's modular stats) of one run, or (None, None) past the timeout."""
+    command = [binary, "groebner", "--vars", ",".join(variables), "--method", "f4", "--eliminate",
+               ",".join(eliminated), "--json", "--timeout", str(timeout)] + polys
+    start = time.monotonic()
+    try:
+        done = subprocess.run(command, capture_output=True, text=True, timeout=timeout + 5)
+    except subprocess.TimeoutExpired:
+        return None, None
+    if done.returncode != 0:
+        return None, None
+    return time.monotonic() - start, json.loads(done.stdout)["stats"]["modular"]
+
+
+def cell(seconds, modular, timeout):
+    if seconds is None:
+        return "> %g s" % timeout
+    return "%.2f s (%d primes; %.2f + %.2f + %.2f s%s)" % (
+        seconds, modular["primes"], modular["modular_ms"] / 1000, modular["lift_ms"] / 1000,
+        modular["verify_ms"] / 1000, "" if modular["proven"] else ", NOT PROVEN")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--timeout", type=float, default=60)
+    parser.add_argument("--min-seconds", type=float, default=1)
+    parser.add_argument("--bin", default=os.path.join(ROOT, "build", "bin", "implicitizer"))
+    parser.add_argument("--before", default="")
+    args = parser.parse_args()
+    binaries = ([("before", args.before)] if args.before else []) + [("now", args.bin)]
+    print("| ideal | " + " | ".join("%s: whole run (primes; modulo p + lift + proof)" % label
+                                    for label, _ in binaries) + " |")
+    print("|---" * (1 + len(binaries)) + "|")
+    for name, variables, polys, eliminated in surface_ideals(args.bin):
+        cells = [eliminate(binary, variables, polys, eliminated, args.timeout) for _, binary in binaries]
+        seconds = cells[-1][0]
+        if seconds is not None and seconds < args.min_seconds:
+            continue
+        print("| %s | %s |" % (name, " | ".join(cell(s, m, args.timeout) for s, m in cells)), flush=True)
+
+
+if __name__ == "__main__":
+    main()
