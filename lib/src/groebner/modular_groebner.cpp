@@ -206,23 +206,24 @@ struct LiftedElement {
 
 // Chinese remaindering of the reduced bases of the primes that share one set of
 // leading monomials. The elements are independent, so the remaindering and the
-// reconstruction are shared by the driver's threads, which would otherwise wait for
-// them: element e always goes to thread e mod threads. Handing each element to
-// whichever thread was free instead made the remaindering slower than on one thread,
-// the elements' integers then changing threads (and allocator arenas) from prime to
-// prime.
+// reconstruction are shared by `threads` threads (the driver's batch size: more than
+// one only once a prime was worth a thread), which would otherwise wait for them:
+// element e goes to thread e mod threads. Handing each element to whichever thread
+// was free instead made the remaindering slower than on one thread, the elements'
+// integers then changing threads (and allocator arenas) from prime to prime.
 class BasisLift {
  public:
-  BasisLift(const Ring& ring, std::size_t threads) : ring_(ring), threads_(std::max<std::size_t>(threads, 1)) {}
+  explicit BasisLift(const Ring& ring) : ring_(ring) {}
 
   std::size_t primes() const { return primes_; }
   std::size_t first_seen() const { return first_seen_; }
   void set_first_seen(std::size_t order) { first_seen_ = order; }
 
-  void add(const std::vector<ModPolynomial>& basis, std::uint64_t prime) {
+  void add(const std::vector<ModPolynomial>& basis, std::uint64_t prime, std::size_t threads) {
     if (elements_.empty()) elements_.resize(basis.size());
-    run_one_per_thread(std::min(threads_, basis.size()), [&](std::size_t t) {
-      for (std::size_t e = t; e < basis.size(); e += threads_) elements_[e].add(basis[e], prime, ring_);
+    threads = std::max<std::size_t>(threads, 1);
+    run_one_per_thread(std::min(threads, basis.size()), [&](std::size_t t) {
+      for (std::size_t e = t; e < basis.size(); e += threads) elements_[e].add(basis[e], prime, ring_);
     });
     ++primes_;
   }
@@ -230,11 +231,12 @@ class BasisLift {
   // Rational reconstruction of every coefficient; the candidate basis, or nullopt
   // when a coefficient has none (each thread stops at its first failure, and at the
   // next element once another thread failed).
-  std::optional<std::vector<Polynomial>> reconstruct(const RingPtr& ring) {
+  std::optional<std::vector<Polynomial>> reconstruct(const RingPtr& ring, std::size_t threads) {
     std::vector<std::vector<Integer>> values(elements_.size());
     std::atomic<bool> failed = false;
-    run_one_per_thread(std::min(threads_, elements_.size()), [&](std::size_t t) {
-      for (std::size_t e = t; e < elements_.size() && !failed.load(std::memory_order_relaxed); e += threads_) {
+    threads = std::max<std::size_t>(threads, 1);
+    run_one_per_thread(std::min(threads, elements_.size()), [&](std::size_t t) {
+      for (std::size_t e = t; e < elements_.size() && !failed.load(std::memory_order_relaxed); e += threads) {
         if (!elements_[e].lift.reconstruct()) {
           failed = true;
           return;
@@ -264,7 +266,6 @@ class BasisLift {
 
  private:
   const Ring& ring_;
-  std::size_t threads_;
   std::vector<LiftedElement> elements_;
   std::size_t primes_ = 0;
   std::size_t first_seen_ = 0;
@@ -407,7 +408,7 @@ class ModularDriver {
       // its total cost stays a constant factor of the lifting's.
       if (majority != nullptr && majority->primes() >= next_reconstruction_) {
         ++stats_.reconstructions;
-        candidate = majority->reconstruct(ring_);
+        candidate = majority->reconstruct(ring_, batch_size_);
         if (!candidate) next_reconstruction_ = majority->primes() + std::max<std::size_t>(1, majority->primes() / 4);
       }
       stats_.lift_ms += timer.elapsed_ms();
@@ -499,10 +500,10 @@ class ModularDriver {
     const std::vector<std::int32_t> key = leading_key(*ring_, run.basis);
     auto it = lifts_.find(key);
     if (it == lifts_.end()) {
-      it = lifts_.emplace(key, BasisLift(*ring_, threads_)).first;
+      it = lifts_.emplace(key, BasisLift(*ring_)).first;
       it->second.set_first_seen(lifts_.size());
     }
-    it->second.add(run.basis, run.prime);
+    it->second.add(run.basis, run.prime, batch_size_);
   }
 
   // The lift of the most primes (ties: the set seen first); the others are unlucky.
