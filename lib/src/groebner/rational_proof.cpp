@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -236,6 +237,81 @@ class RowReducer {
   Integer gcd_, scale_, factor_;
 };
 
+// The checks grouped by degree, the degrees in increasing order and the checks
+// numbered one after the other, so that threads take them from one counter. A
+// degree's matrix is built once: by the first thread that needs it, or ahead of time
+// by the first thread to reach the degree before it, while the others still reduce
+// (no thread waits for a matrix unless the degree before has no check left to take).
+// It is freed when its last check is done.
+class DegreeSchedule {
+ public:
+  using Builder = std::function<ProofMatrix(const std::vector<Check>&)>;
+
+  DegreeSchedule(const std::map<std::int32_t, std::vector<Check>>& by_degree, Builder build)
+      : degrees_(by_degree.size()), build_(std::move(build)) {
+    std::size_t g = 0;
+    for (const auto& degree_checks : by_degree) {
+      degrees_[g].checks = &degree_checks.second;
+      degrees_[g].first = total_;
+      degrees_[g].left = degree_checks.second.size();
+      total_ += degree_checks.second.size();
+      ++g;
+    }
+  }
+
+  std::size_t total() const { return total_; }
+
+  // The degree of check k, searched from degree `from` on (the degree of the thread's
+  // previous check: the counter only grows).
+  std::size_t degree_of(std::size_t k, std::size_t from) const {
+    while (k >= degrees_[from].first + degrees_[from].checks->size()) ++from;
+    return from;
+  }
+
+  // Check k of degree g.
+  const Check& check(std::size_t g, std::size_t k) const { return (*degrees_[g].checks)[k - degrees_[g].first]; }
+  std::size_t index_in_degree(std::size_t g, std::size_t k) const { return k - degrees_[g].first; }
+
+  // Degree g's matrix, built if it is not yet; the first thread here also builds the
+  // next degree's. Valid until g's last check is done().
+  const ProofMatrix& matrix(std::size_t g) {
+    build(degrees_[g]);
+    if (g + 1 < degrees_.size() && !degrees_[g + 1].claimed_ahead.exchange(true)) build(degrees_[g + 1]);
+    return *degrees_[g].matrix;
+  }
+
+  // One check of degree g is done.
+  void done(std::size_t g) {
+    if (--degrees_[g].left == 0) degrees_[g].matrix.reset();
+  }
+
+ private:
+  struct Degree {
+    const std::vector<Check>* checks = nullptr;
+    std::size_t first = 0;  // the number of its first check
+    std::once_flag built;
+    std::atomic<bool> claimed_ahead = false;
+    std::unique_ptr<const ProofMatrix> matrix;
+    std::atomic<std::size_t> left = 0;  // checks not done
+  };
+
+  void build(Degree& degree) {
+    std::call_once(degree.built, [&] { degree.matrix = std::make_unique<const ProofMatrix>(build_(*degree.checks)); });
+  }
+
+  std::vector<Degree> degrees_;  // never resized: a Degree cannot move
+  std::size_t total_ = 0;
+  Builder build_;
+};
+
+std::size_t largest_coefficient_bits(const std::vector<IntPolynomial>& basis) {
+  std::size_t bits = 0;
+  for (const auto& g : basis) {
+    for (const auto& c : g.coefficients) bits = std::max(bits, mpz_sizeinbase(c.get_mpz_t(), 2));
+  }
+  return bits;
+}
+
 }  // namespace
 
 ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynomial>& generators,
@@ -252,63 +328,28 @@ ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynom
     if (!generators[i].empty()) by_degree[ring.total_degree(generators[i].monomials.data())].push_back({false, i, 0});
   }
   for (const SPair& pair : pairs) by_degree[pair.lcm_degree].push_back({true, pair.i, pair.j});
+  DegreeSchedule schedule(by_degree, [&](const std::vector<Check>& checks) {
+    return build_proof_matrix(ring, generators, basis, reducers, checks, budget);
+  });
 
   ProofOutcome outcome;
   outcome.pairs = pairs.size();
-  // The degrees in increasing order, their checks numbered one after the other. A
-  // degree's matrix is built by the first thread that needs it, or ahead of time by
-  // the first thread to reach the degree before it, while the others reduce: no
-  // thread waits for a matrix unless the degree before has no check left to take.
-  // Each is freed when its last check is done.
-  struct DegreeWork {
-    const std::vector<Check>* checks = nullptr;
-    std::size_t first = 0;  // the number of its first check
-    std::once_flag built;
-    std::atomic<bool> claimed_ahead = false;
-    std::unique_ptr<const ProofMatrix> matrix;
-    std::atomic<std::size_t> left = 0;  // checks not finished
-  };
-  std::vector<DegreeWork> degrees(by_degree.size());
-  std::size_t total = 0;
-  {
-    std::size_t g = 0;
-    for (const auto& degree_checks : by_degree) {
-      degrees[g].checks = &degree_checks.second;
-      degrees[g].first = total;
-      degrees[g].left = degree_checks.second.size();
-      total += degree_checks.second.size();
-      ++g;
-    }
-  }
-  auto build = [&](DegreeWork& degree) {
-    std::call_once(degree.built, [&] {
-      degree.matrix = std::make_unique<const ProofMatrix>(
-          build_proof_matrix(ring, generators, basis, reducers, *degree.checks, budget));
-    });
-  };
   std::atomic<bool> stop = false, refuted = false;
   std::atomic<std::size_t> next = 0;
-  const std::size_t workers = std::min(std::max<std::size_t>(threads, 1), total);
+  const std::size_t workers = std::min(std::max<std::size_t>(threads, 1), schedule.total());
+  const std::size_t coefficient_bits = largest_coefficient_bits(basis);
   std::vector<RowReducer> reducers_per_thread;
-  std::size_t coefficient_bits = 0;
-  for (const auto& g : basis) {
-    for (const auto& c : g.coefficients)
-      coefficient_bits = std::max(coefficient_bits, mpz_sizeinbase(c.get_mpz_t(), 2));
-  }
   for (std::size_t t = 0; t < workers; ++t) reducers_per_thread.emplace_back(basis, coefficient_bits, budget);
   run_one_per_thread(workers, [&](std::size_t t) {
     RowReducer& reducer = reducers_per_thread[t];
     std::size_t g = 0;
     try {
-      for (std::size_t k; !stop.load(std::memory_order_relaxed) && (k = next.fetch_add(1)) < total;) {
-        while (k >= degrees[g].first + degrees[g].checks->size()) ++g;
-        DegreeWork& degree = degrees[g];
-        build(degree);
-        if (g + 1 < degrees.size() && !degrees[g + 1].claimed_ahead.exchange(true)) build(degrees[g + 1]);
+      for (std::size_t k; !stop.load(std::memory_order_relaxed) && (k = next.fetch_add(1)) < schedule.total();) {
+        g = schedule.degree_of(k, g);
+        const ProofMatrix& matrix = schedule.matrix(g);
         budget.check(kWhere);
-        const ProofMatrix& matrix = *degree.matrix;
-        const std::size_t c = k - degree.first;
-        const Check& check = (*degree.checks)[c];
+        const Check& check = schedule.check(g, k);
+        const std::size_t c = schedule.index_in_degree(g, k);
         reducer.resize(matrix.pivot_of.size());
         if (check.is_pair) {
           reducer.load_pair(matrix.rows[matrix.first_half[c]], matrix.rows[matrix.second_half[c]]);
@@ -319,16 +360,15 @@ ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynom
           refuted = true;
           stop = true;
         }
-        if (--degree.left == 0) degree.matrix.reset();
-        if (t == 0) budget.report_step(kWhere, k, total);
+        schedule.done(g);
+        if (t == 0) budget.report_step(kWhere, k, schedule.total());
       }
     } catch (...) {
       stop = true;  // the others stop at their next check; the error is rethrown
       throw;
     }
   });
-  if (refuted) return outcome;
-  outcome.proven = true;
+  outcome.proven = !refuted;
   return outcome;
 }
 
