@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
 #include <span>
 #include <string>
@@ -17,6 +18,7 @@
 #include "groebner/groebner_support.hpp"
 #include "implicitizer/core/errors.hpp"
 #include "implicitizer/groebner/elimination.hpp"
+#include "implicitizer/groebner/f4.hpp"
 
 namespace implicitizer {
 namespace {
@@ -237,6 +239,74 @@ TEST(ModularGroebnerTest, AWorkAllowanceStopsTheProofHalfway) {
   EXPECT_STREQ(halfway.step.phase, kProof);
   EXPECT_GT(halfway.step.done, 0u);
   EXPECT_LT(halfway.step.done, halfway.step.total);
+}
+
+// `basis` (over ℚ) with every coefficient taken modulo p into [0, p), printed and
+// sorted: compute_groebner_basis_modulo's form of the same basis, for p dividing no
+// denominator.
+std::vector<std::string> printed_modulo(const std::vector<Polynomial>& basis, std::uint64_t p) {
+  const mpz_class prime(static_cast<unsigned long>(p));
+  std::vector<Polynomial> reduced;
+  for (const Polynomial& g : basis) {
+    const mpq_class content = to_mpq(g.content());
+    mpz_class inverse;
+    mpz_invert(inverse.get_mpz_t(), mpz_class(content.get_den()).get_mpz_t(), prime.get_mpz_t());
+    const std::size_t w = g.ring()->monomial_size();
+    std::vector<Integer> coefficients;
+    std::vector<std::int32_t> monomials;
+    for (std::size_t i = 0; i < g.num_terms(); ++i) {
+      mpz_class c = content.get_num() * g.integer_coefficients()[i] * inverse;
+      mpz_fdiv_r(c.get_mpz_t(), c.get_mpz_t(), prime.get_mpz_t());
+      if (c == 0) continue;
+      coefficients.push_back(c);
+      monomials.insert(monomials.end(), g.monomial(i), g.monomial(i) + w);
+    }
+    reduced.push_back(Polynomial::from_terms(g.ring(), Rational(1), std::move(coefficients), std::move(monomials)));
+  }
+  std::vector<std::string> printed = print_all(reduced);
+  std::sort(printed.begin(), printed.end());
+  return printed;
+}
+
+// A proof row whose entries outgrow the candidate's largest coefficient eightfold is
+// divided by its content, and the proof still goes through. Cyclic-6 after the change
+// of variables x_i -> x_i + (i+1)·x_(i+1) gets there (one row, on one thread), where
+// the classic ideals stay below two thirds of the threshold. The proven basis, taken
+// modulo a prime the route does not use, is F4's basis modulo that prime.
+TEST(ModularGroebnerTest, ARowThatOutgrowsTheCoefficientsIsDividedByItsContent) {
+  const RingPtr ring = Ring::make({"x1", "x2", "x3", "x4", "x5", "x6"});
+  const std::size_t n = 6;
+  std::vector<std::string> v;
+  for (std::size_t i = 0; i < n; ++i) {
+    v.push_back("(x" + std::to_string(i + 1) + "+" + std::to_string(i + 2) + "*x" + std::to_string((i + 1) % n + 1) +
+                ")");
+  }
+  std::vector<std::string> cyclic;
+  for (std::size_t k = 1; k < n; ++k) {
+    std::string sum;
+    for (std::size_t i = 0; i < n; ++i) {
+      std::string product;
+      for (std::size_t j = 0; j < k; ++j) product += (j > 0 ? "*" : "") + v[(i + j) % n];
+      sum += (i > 0 ? "+" : "") + product;
+    }
+    cyclic.push_back(sum);
+  }
+  std::string all;
+  for (std::size_t i = 0; i < n; ++i) all += (i > 0 ? "*" : "") + v[i];
+  cyclic.push_back(all + "-1");
+  const auto generators = parse_all(cyclic, ring);
+  ModularGroebnerParams params;
+  params.algorithm = ModularAlgorithm::f4;
+  params.threads = 1;
+  params.buchberger.budget.set_timeout(60);
+  ModularGroebnerStats stats;
+  const GroebnerResult r = compute_groebner_basis_modular(generators, params, &stats);
+  EXPECT_TRUE(stats.proven);
+  EXPECT_GE(stats.proof_content_divisions, 1u);
+  constexpr std::uint64_t kOtherPrime = 1000003;
+  std::vector<std::string> f4 = print_all(compute_groebner_basis_modulo(generators, kOtherPrime, ModularAlgorithm::f4));
+  std::sort(f4.begin(), f4.end());
+  EXPECT_EQ(printed_modulo(r.basis, kOtherPrime), f4);
 }
 
 TEST(ModularGroebnerTest, OneThreadAndTwoGiveTheSameBasis) {

@@ -383,6 +383,7 @@ class ModularDriver {
           const detail::ProofOutcome proof =
               detail::prove_groebner_basis(*run_ring_, generators_, integers, params_.buchberger, threads_);
           stats_.verification_pairs += proof.pairs;
+          stats_.proof_content_divisions += proof.content_divisions;
           stats_.verify_ms += timer.elapsed_ms();
           if (proof.proven) {
             stats_.proven = true;

@@ -78,6 +78,8 @@ void write_modular_stats(Writer& w, const ModularGroebnerStats& s) {
   w.Bool(s.proven);
   w.Key("verification_pairs");
   w.Uint64(s.verification_pairs);
+  w.Key("proof_content_divisions");
+  w.Uint64(s.proof_content_divisions);
   w.Key("threads");
   w.Uint64(s.threads);
   w.Key("modular_ms");
