@@ -39,9 +39,9 @@ std::vector<SPair> criterion_pairs(const Ring& ring, const std::vector<IntPolyno
   BuchbergerStats stats;
   SPairQueue queue(ring, params, stats);
   GrowingBasis<IntPolynomial> entries(ring, queue);
-  // The criteria read leading monomials only, and the candidate is homogeneous (its
-  // sugar is its leading degree): the leading terms stand for the elements, which
-  // spares copying every coefficient.
+  // The criteria read leading monomials only (the sugar only orders the queue, and
+  // every pair left is taken): the leading terms stand for the elements, which spares
+  // copying every coefficient.
   const std::size_t w = ring.monomial_size();
   std::vector<IntPolynomial> leads(basis.size());
   for (std::size_t i = 0; i < basis.size(); ++i) {
