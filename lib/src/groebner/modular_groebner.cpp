@@ -161,6 +161,14 @@ std::vector<std::int32_t> leading_key(const Ring& ring, const std::vector<ModPol
   return key;
 }
 
+// The same key of a lifted candidate (its monomials are packed as the primes' are).
+std::vector<std::int32_t> leading_key(const Ring& ring, const std::vector<Polynomial>& candidate) {
+  const std::size_t w = ring.monomial_size();
+  std::vector<std::int32_t> key;
+  for (const auto& g : candidate) key.insert(key.end(), g.leading_monomial(), g.leading_monomial() + w);
+  return key;
+}
+
 // ---------------------------------------------------------------- lifting
 
 // The coefficients of one basis element, lifted by monomial (the union of the
@@ -477,15 +485,7 @@ class ModularDriver {
   // Whether `candidate` has the leading monomials of the basis the trace was learned
   // from (false without a trace).
   bool has_learned_leads(const std::vector<Polynomial>& candidate) const {
-    const std::size_t w = ring_->monomial_size();
-    if (trace_ == nullptr || candidate.size() * w != trace_key_.size()) return false;
-    for (std::size_t e = 0; e < candidate.size(); ++e) {
-      if (!std::equal(trace_key_.begin() + static_cast<long>(e * w),
-                      trace_key_.begin() + static_cast<long>((e + 1) * w), candidate[e].leading_monomial())) {
-        return false;
-      }
-    }
-    return true;
+    return trace_ != nullptr && leading_key(*ring_, candidate) == trace_key_;
   }
 
   // Forgets the trace and every lift (some may hold replays); the primes from here on
@@ -530,21 +530,15 @@ class ModularDriver {
   // `integers` is the candidate as primitive integer polynomials.
   bool confirms(const std::vector<Polynomial>& candidate, const std::vector<IntPolynomial>& integers,
                 const std::vector<PrimeRun>& batch) const {
+    const std::vector<std::int32_t> key = leading_key(*ring_, candidate);
     std::size_t agreeing = 0;
     for (const PrimeRun& run : batch) {
       if (agrees_modulo(integers, run, *ring_)) {
         ++agreeing;
         continue;
       }
-      // Another leading-monomial set: an unlucky prime (or the candidate is), no verdict.
-      if (run.basis.size() != candidate.size()) continue;
-      bool same_leads = true;
-      const std::size_t w = ring_->monomial_size();
-      for (std::size_t e = 0; e < candidate.size() && same_leads; ++e) {
-        same_leads = std::equal(run.basis[e].monomials.begin(), run.basis[e].monomials.begin() + static_cast<long>(w),
-                                candidate[e].leading_monomial());
-      }
-      if (same_leads) return false;
+      // Other leading monomials: an unlucky prime (or the candidate is), no verdict.
+      if (leading_key(*ring_, run.basis) == key) return false;
     }
     return agreeing > 0;
   }
