@@ -4,14 +4,17 @@ Singular's and Macaulay2's, in one run, each as a whole process.
 
     python3 bench/groebner_peers.py [--ideals cyclic5,katsura5,...] [--timeout S]
         [--methods modular,auto] [--giac /tmp/giac_gbasis] [--bin build/bin/implicitizer]
-        [--before OTHER/build/bin/implicitizer]
+        [--peers giac,giac-certified,singular,m2]
+        [--giac-certified /tmp/giac_gbasis_certified] [--before OTHER/build/bin/implicitizer]
 
 Ours runs `implicitizer groebner --order grevlex --method M --json` and the table also
 shows, from its JSON, the time of the runs modulo primes and of the proof over Q.
 With --before, every method also runs with that binary (another commit's build),
 just before ours on the same ideal, so that the two are compared within one run.
 Giac's driver is /work/shared/bench/peers/giac_gbasis.cpp built into /tmp (its
-README), run with one thread; Singular runs `std` with redSB and redTail; Macaulay2
+README), run with one thread; "giac-certified" is bench/peers/giac_gbasis_certified.cpp
+(built the same way), Giac told to prove its basis (proba_epsilon:=0), the like of
+ours, which is always proven; Singular runs `std` with redSB and redTail; Macaulay2
 `gb`. A run past --timeout prints "> T". The ideals are ../shared/bench/gb/ideals.json.
 Prints a Markdown table (docs/benchmarks.md records it with the command).
 """
@@ -60,6 +63,7 @@ def ours(binary, ideal, method, timeout):
 
 
 def giac(binary, ideal, timeout):
+    """Either Giac driver: both take the polynomials, the variables and the threads."""
     seconds, out = timed([binary, ",".join(ideal["polys"]), ",".join(ideal["vars"]), "1"], timeout)
     return seconds, (out.split()[0] + " elements" if seconds is not None and out.split() else out)
 
@@ -94,6 +98,7 @@ def main():
     parser.add_argument("--methods", default="modular")
     parser.add_argument("--timeout", type=float, default=120)
     parser.add_argument("--giac", default="/tmp/giac_gbasis")
+    parser.add_argument("--giac-certified", default="/tmp/giac_gbasis_certified")
     parser.add_argument("--bin", default=os.path.join(ROOT, "build", "bin", "implicitizer"))
     parser.add_argument("--peers", default="giac,singular,m2")
     parser.add_argument("--before", default="")
@@ -117,6 +122,8 @@ def main():
         for peer in peers:
             if peer == "giac":
                 seconds, detail = giac(args.giac, ideal, args.timeout)
+            elif peer == "giac-certified":
+                seconds, detail = giac(args.giac_certified, ideal, args.timeout)
             elif peer == "singular":
                 seconds, detail = singular(ideal, args.timeout)
             else:
