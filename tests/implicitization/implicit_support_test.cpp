@@ -11,6 +11,8 @@
 #include <set>
 
 #include "implicitization/surfaces.hpp"
+#include "implicitizer/core/budget.hpp"
+#include "implicitizer/core/errors.hpp"
 #include "implicitizer/implicitization/implicitize.hpp"
 #include "implicitizer/polynomial/parser.hpp"
 
@@ -94,6 +96,25 @@ TEST(PredictImplicitSupport, DensePatchesGainNothing) {
     EXPECT_EQ(support->group_order, 1u);
     EXPECT_EQ(support->classes.size(), 1u);
     EXPECT_EQ(support->columns, 165u);  // C(8 + 3, 3)
+  }
+}
+
+// The request fuzzer's surface: its box is enumerated monomial by monomial, long
+// enough to outlast a short deadline, so the enumeration checks the budget and a
+// cancelled one stops it, naming the phase.
+TEST(PredictImplicitSupport, EnumeratingALargeBoxChecksTheBudget) {
+  const Parametrization p = parse_parametrization("s^40+t", "t^30+s", "s*t");
+  const auto support = predict_implicit_support(p);
+  ASSERT_TRUE(support);
+  EXPECT_GT(support->columns, 1000000u);
+  Budget cancelled;
+  cancelled.cancel();
+  try {
+    (void)predict_implicit_support(p, cancelled);
+    ADD_FAILURE() << "the enumeration did not check the budget";
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit(), Limit::cancelled);
+    EXPECT_NE(std::string(e.what()).find("the predicted support"), std::string::npos) << e.what();
   }
 }
 

@@ -145,7 +145,7 @@ Answer buchberger_before_probe(AutoState& s) {
 /// Passes when the prediction does not give the equation (a map of degree > 1).
 Answer sparse_support_by_interpolation(AutoState& s) {
   if (!is_surface_in_two_parameters(s)) return std::nullopt;
-  const std::optional<ImplicitSupport> support = predict_implicit_support(s.p);
+  const std::optional<ImplicitSupport> support = predict_implicit_support(s.p, s.params.budget);
   if (!support || support->largest_class > InterpolationParams{}.max_columns) return std::nullopt;
   const double dense = space_monomial_count(implicit_degree_bound(s.p));
   if (support->cubed_columns > std::min(kSparseMaxCubedColumns, kSparseShareOfDense * dense * dense * dense)) {

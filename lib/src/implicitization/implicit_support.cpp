@@ -159,7 +159,7 @@ double space_monomial_count(std::int32_t d) {
   return (e + 1) * (e + 2) * (e + 3) / 6;
 }
 
-std::optional<ImplicitSupport> predict_implicit_support(const Parametrization& parametrization) {
+std::optional<ImplicitSupport> predict_implicit_support(const Parametrization& parametrization, const Budget& budget) {
   if (parametrization.coordinates.size() != 3 || parametrization.parameter_ring->num_variables() != 2) {
     return std::nullopt;
   }
@@ -186,9 +186,13 @@ std::optional<ImplicitSupport> predict_implicit_support(const Parametrization& p
     step[i] = {supports[i + 1][0][0] - supports[0][0][0], supports[i + 1][0][1] - supports[0][0][1]};
   }
   std::map<Point, std::size_t> index;
+  std::size_t visited = 0;
   for (std::int32_t i = 0; i <= out.degree_in[0]; ++i) {
     for (std::int32_t j = 0; j <= out.degree_in[1] && i + j <= out.total_degree; ++j) {
       for (std::int32_t k = 0; k <= out.degree_in[2] && i + j + k <= out.total_degree; ++k) {
+        // A box near kMaxPredictedBox outlasts a short deadline (the request fuzzer
+        // found one); a check reads the clock, hence one every 4096 monomials.
+        if (++visited % 4096 == 0) budget.check("the predicted support");
         const Point cls = grading.canonical(
             {i * step[0][0] + j * step[1][0] + k * step[2][0], i * step[0][1] + j * step[1][1] + k * step[2][1]});
         const auto [it, fresh] = index.emplace(cls, out.classes.size());

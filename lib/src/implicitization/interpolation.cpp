@@ -339,7 +339,7 @@ ImplicitEquationCheck check_implicit_equation(const Polynomial& candidate, const
   if (monomial_count(n, d) > static_cast<double>(options.max_columns)) {
     // The dense matrix is too large: the classes of the predicted support, whose size
     // follows the equation's sparsity, decide instead (sparse_interpolation.hpp).
-    const std::optional<ImplicitSupport> support = predict_implicit_support(parametrization);
+    const std::optional<ImplicitSupport> support = predict_implicit_support(parametrization, options.budget);
     if (!support || support->largest_class > options.max_columns) {
       throw LimitExceeded(Limit::size, "check_implicit_equation: the matrix would exceed " +
                                            std::to_string(options.max_columns) +

@@ -180,7 +180,7 @@ ImplicitizeResult interpolation_route(const Parametrization& p, const Budget& bu
   // refusal.
   const std::size_t max_columns = InterpolationParams{}.max_columns;
   if (p.coordinates.size() == 3 && space_monomial_count(implicit_degree_bound(p)) > static_cast<double>(max_columns)) {
-    const std::optional<ImplicitSupport> support = predict_implicit_support(p);
+    const std::optional<ImplicitSupport> support = predict_implicit_support(p, budget);
     if (support && support->largest_class <= max_columns && support->cubed_columns <= kSparseMaxCubedColumns) {
       if (auto sparse = sparse_interpolation_route(p, *support, budget)) return std::move(*sparse);
     }

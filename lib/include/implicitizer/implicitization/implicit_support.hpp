@@ -32,6 +32,7 @@
 #include <optional>
 #include <vector>
 
+#include "implicitizer/core/budget.hpp"
 #include "implicitizer/implicitization/parametrization.hpp"
 
 namespace implicitizer {
@@ -64,8 +65,11 @@ double space_monomial_count(std::int32_t d);
 
 /// The predicted support of the implicit equation of a surface in two parameters
 /// (three coordinates), as the header describes. nullopt for other parametrizations
-/// and when the box has more than kMaxPredictedBox monomials.
-std::optional<ImplicitSupport> predict_implicit_support(const Parametrization& parametrization);
+/// and when the box has more than kMaxPredictedBox monomials. Enumerating a box of
+/// that size takes tens of milliseconds, so `budget` is checked as it goes (stops
+/// name "the predicted support").
+std::optional<ImplicitSupport> predict_implicit_support(const Parametrization& parametrization,
+                                                        const Budget& budget = Budget());
 
 /// The mixed volume MV(P, Q) of two lattice polygons given by points (2 coordinates
 /// each; the polygons are their convex hulls), normalised so that MV(P, P) = 2·area(P):
