@@ -118,6 +118,14 @@ TEST(PredictImplicitSupport, EnumeratingALargeBoxChecksTheBudget) {
   }
 }
 
+// Exponents near the parser's limit give degree bounds in the millions: the box is
+// refused from its size, counted only as far as kMaxPredictedBox (counted in full it
+// did not finish in 30 s, and `implicitize --timeout 1` did not stop).
+TEST(PredictImplicitSupport, AnEnormousBoxIsRefusedWithoutCountingIt) {
+  const Parametrization p = parse_parametrization("s^1000+t^999", "t^1000+s^997", "s^500*t^501");
+  EXPECT_FALSE(predict_implicit_support(p));
+}
+
 TEST(PredictImplicitSupport, OnlySurfacesInTwoParameters) {
   EXPECT_FALSE(predict_implicit_support(parse_parametrization({"t^2", "t^3"})));
   EXPECT_FALSE(predict_implicit_support(parse_parametrization("s+u", "t", "s*t*u")));

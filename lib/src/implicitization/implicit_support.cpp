@@ -131,12 +131,15 @@ void bound_degrees(const std::vector<std::vector<Point>>& supports, ImplicitSupp
   for (std::int32_t& d : out.degree_in) d = std::min(d, out.total_degree);
 }
 
-// The monomials of the box, or 0 when there are more than kMaxPredictedBox.
-double box_size(const ImplicitSupport& s) {
+// The monomials of the box, counted only until they pass `limit` (then the count
+// returned is above it): exponents up to the parser's 1000 give degree bounds in the
+// millions, whose full count would take about 10^12 steps.
+double box_size(const ImplicitSupport& s, double limit) {
   double count = 0;
   for (std::int32_t i = 0; i <= s.degree_in[0]; ++i) {
     for (std::int32_t j = 0; j <= s.degree_in[1] && i + j <= s.total_degree; ++j) {
       count += std::min(s.degree_in[2], s.total_degree - i - j) + 1;
+      if (count > limit) return count;
     }
   }
   return count;
@@ -175,7 +178,7 @@ std::optional<ImplicitSupport> predict_implicit_support(const Parametrization& p
   }
   ImplicitSupport out;
   bound_degrees(supports, out);
-  const double size = box_size(out);
+  const double size = box_size(out, kMaxPredictedBox);
   if (size > kMaxPredictedBox) return std::nullopt;
 
   // x^α has the class Σ α_i·(g_i − g_0), g_i the class of any exponent of form i.
