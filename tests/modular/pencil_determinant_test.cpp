@@ -210,6 +210,37 @@ TEST(PencilDeterminant, BudgetStopsTheEvaluation) {
   }
 }
 
+// One evaluation is a whole determinant, which FLINT cannot interrupt (seconds at
+// size 2000): evaluations that would end past the deadline are refused before the
+// first, naming the sizes. Those of the curve t^1000 + t^3, t^999 (a 2000 × 2000
+// pencil, C(1002, 2) + 1 evaluations) are predicted at about 10^6 s, refused on a
+// 1 s budget whatever the machine; without a deadline, or below size 256, never.
+TEST(PencilDeterminant, EvaluationsPastTheDeadlineAreRefusedBeforeTheFirst) {
+  try {
+    refuse_determinants_past_deadline(2000, 501502, Budget::with_timeout(1));
+    FAIL() << "expected the time limit";
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit(), Limit::time);
+    EXPECT_NE(std::string(e.what()).find("501502 evaluations of a 2000x2000 matrix"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(refuse_determinants_past_deadline(2000, 501502, Budget()));
+  EXPECT_NO_THROW(refuse_determinants_past_deadline(100, 501502, Budget::with_timeout(1)));
+}
+
+// A cancelled budget stops the probe at the reduction of the pencil modulo its prime.
+TEST(PencilDeterminant, TheProbeChecksItsBudget) {
+  std::mt19937_64 rng(4);
+  const MatrixPencil m = random_pencil(30, 3, rng, 100, 1.0);
+  Budget cancelled;
+  cancelled.cancel();
+  try {
+    (void)probe_pencil_determinant(m, {}, 0x5eed, 1, cancelled);
+    FAIL() << "expected the cancellation";
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit(), Limit::cancelled);
+  }
+}
+
 TEST(PencilDeterminant, RefusesMismatchedRingsAndMinors) {
   MatrixPencil m(2, 2);
   PencilDeterminantParams options;

@@ -5,10 +5,13 @@
 #include <flint/nmod_vec.h>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
+#include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/modular/crt_lift.hpp"
 #include "implicitizer/modular/flint_handles.hpp"
 #include "implicitizer/modular/one_per_thread.hpp"
@@ -37,10 +40,13 @@ std::size_t MatrixPencil::determinant_coefficient_bits() const {
 
 namespace {
 
+// The size of the determinant timed to predict larger ones.
+constexpr std::size_t kTimedSize = 128;
+
 // The pencil reduced modulo one prime, evaluated at points of a grid.
 class ModularPencil {
  public:
-  ModularPencil(const MatrixPencil& pencil, const std::vector<std::size_t>& minor, mp_limb_t p)
+  ModularPencil(const MatrixPencil& pencil, const std::vector<std::size_t>& minor, mp_limb_t p, const Budget& budget)
       : n_(pencil.size()),
         k_(pencil.num_variables()),
         minor_(minor),
@@ -51,6 +57,7 @@ class ModularPencil {
     Fmpz c;
     for (std::size_t part = 0; part <= k_; ++part) {
       for (std::size_t r = 0; r < n_; ++r) {
+        budget.check("determinant (the pencil modulo p)");
         for (std::size_t col = 0; col < n_; ++col) {
           fmpz_set_mpz(c.get(), pencil.at(part, r, col).get_mpz_t());
           reduced_[(part * n_ + r) * n_ + col] = fmpz_fdiv_ui(c.get(), p);
@@ -247,7 +254,7 @@ std::optional<std::vector<mp_limb_t>> image_modulo(const MatrixPencil& pencil, c
                                                    std::size_t& evaluations) {
   const std::size_t k = pencil.num_variables();
   const std::size_t points = static_cast<std::size_t>(options.degree_bound) + 1;
-  ModularPencil modular(pencil, options.divisor_minor, p);
+  ModularPencil modular(pencil, options.divisor_minor, p, options.budget);
   nmod_t mod;
   nmod_init(&mod, p);
   ResidueStream stream(seed ^ p);
@@ -258,7 +265,7 @@ std::optional<std::vector<mp_limb_t>> image_modulo(const MatrixPencil& pencil, c
   lattice.values.resize(lattice.stride.empty() ? 1 : lattice.stride[0] * points);
   std::vector<mp_limb_t> u(k);
   for (std::size_t s = 0; s < support.flat.size(); ++s) {
-    if (s % points == 0) options.budget.check("determinant evaluation");
+    options.budget.check("determinant evaluation");  // an evaluation is a whole determinant
     for (std::size_t v = 0; v < k; ++v) u[v] = nodes[v][static_cast<std::size_t>(support.exponents[s][v])];
     const auto value = modular.evaluate(u.data());
     ++evaluations;
@@ -325,6 +332,33 @@ Polynomial polynomial_of(const CrtLift& crt, const DenseSupport& support, const 
 
 }  // namespace
 
+// As interpolation refuses its kernels (docs/algorithms.md, "Kernels that would end
+// past the deadline"): the time is predicted from a determinant of size kTimedSize
+// timed on this run (so under this load), scaled by the cube of the size (FLINT's
+// elimination grows more slowly than that, so the prediction errs high); below
+// 2·kTimedSize one evaluation is short enough for the checks between them.
+void refuse_determinants_past_deadline(std::size_t size, std::size_t evaluations, const Budget& budget) {
+  const double left = budget.seconds_left();
+  if (size < 2 * kTimedSize || !std::isfinite(left)) return;
+  const mp_limb_t p = PrimeSequence().next();
+  NmodMatrix sample(kTimedSize, kTimedSize, p);
+  ResidueStream stream(size);
+  for (std::size_t r = 0; r < kTimedSize; ++r) {
+    for (std::size_t c = 0; c < kTimedSize; ++c) nmod_mat_entry(sample.get(), r, c) = stream.next(p);
+  }
+  const Stopwatch timer;
+  (void)_nmod_mat_det(sample.get());
+  const double scale = static_cast<double>(size) / kTimedSize;
+  const double predicted = timer.elapsed_ms() / 1000 * scale * scale * scale * static_cast<double>(evaluations);
+  if (predicted <= left) return;
+  std::ostringstream message;
+  message.precision(2);
+  message << "time limit of " << budget.timeout_seconds() << " s exceeded during the determinant: " << evaluations
+          << " evaluations of a " << size << "x" << size << " matrix would take about " << predicted << " s and "
+          << std::max(0.0, left) << " s are left";
+  throw LimitExceeded(Limit::time, message.str());
+}
+
 Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, const PencilDeterminantParams& options,
                               PencilDeterminantStats* stats_out) {
   check_arguments(pencil, ring, options);
@@ -340,6 +374,7 @@ Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, c
   // The answer has at most one term per monomial of the lattice: the size limit
   // applies before any work.
   options.budget.check_terms(support.flat.size(), "determinant");
+  refuse_determinants_past_deadline(pencil.size(), support.flat.size() + 1, options.budget);
   CrtLift crt(support.flat.size());
   PrimeSequence primes = options.primes;
   const unsigned threads = threads_for(pencil, support, options);
@@ -389,14 +424,16 @@ Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, c
 }
 
 PencilProbe probe_pencil_determinant(const MatrixPencil& pencil, const std::vector<std::size_t>& divisor_minor,
-                                     std::uint64_t seed, int trials) {
+                                     std::uint64_t seed, int trials, const Budget& budget) {
   if (pencil.size() == 0) return PencilProbe::nonzero;
+  refuse_determinants_past_deadline(pencil.size(), static_cast<std::size_t>(std::max(trials, 0)), budget);
   PrimeSequence primes(/*skip=*/7);
   ResidueStream stream(seed);
   bool minor_always_zero = true;
   for (int trial = 0; trial < trials; ++trial) {
     const mp_limb_t p = primes.next();
-    ModularPencil modular(pencil, divisor_minor, p);
+    ModularPencil modular(pencil, divisor_minor, p, budget);
+    budget.check("determinant probe");
     std::vector<mp_limb_t> u(pencil.num_variables());
     for (auto& v : u) v = stream.next(p);
     const auto value = modular.evaluate(u.data());

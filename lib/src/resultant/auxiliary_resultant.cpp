@@ -97,8 +97,8 @@ AuxiliaryResultantPlan plan_auxiliary_resultant(const std::array<Polynomial, 4>&
   std::optional<std::size_t> chosen;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     options.budget.check("auxiliary resultant");
-    const PencilProbe probe =
-        probe_pencil_determinant(candidates[i].matrix, candidates[i].minor, /*seed=*/0x5eed, /*trials=*/1);
+    const PencilProbe probe = probe_pencil_determinant(candidates[i].matrix, candidates[i].minor, /*seed=*/0x5eed,
+                                                       /*trials=*/1, options.budget);
     if (probe == PencilProbe::nonzero) {
       if (!chosen) chosen = i;
     } else if (candidates[i].formulation == AuxiliaryFormulation::dixon) {

@@ -46,6 +46,10 @@ AuxiliaryResultant curve_auxiliary_resultant(const std::array<Polynomial, 3>& in
   stats.formulation = AuxiliaryFormulation::sylvester;
   for (const auto& p : wxy) stats.total_degree = std::max(stats.total_degree, p.total_degree());
   if (stats.total_degree < 1) return result;  // a point
+  // The pencil has 3·(2n)² integers and its determinant C(n + 2, 2) evaluations:
+  // refused before it is built when they cannot end in time (n = 1000: 12 M entries).
+  const auto n = static_cast<std::size_t>(stats.total_degree);
+  refuse_determinants_past_deadline(2 * n, (n + 1) * (n + 2) / 2 + 1, options.budget);
   const MatrixPencil pencil = curve_sylvester_pencil(wxy);
   stats.matrix_size = pencil.size();
   stats.degree_bound = stats.total_degree;

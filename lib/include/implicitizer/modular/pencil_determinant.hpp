@@ -91,22 +91,33 @@ struct PencilDeterminantStats {
 /// polynomial in `ring`, whose variables are u_1..u_k in order. Throws
 /// std::invalid_argument when the ring or the options do not fit the pencil,
 /// std::logic_error when the answer exceeds degree_bound (the bound was wrong),
-/// LimitExceeded when the budget or max_primes runs out.
+/// LimitExceeded when the budget or max_primes runs out, and before the first
+/// evaluation when the evaluations one prime needs would end past the deadline
+/// (each is a determinant of the whole pencil, which cannot be interrupted).
 Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, const PencilDeterminantParams& options,
                               PencilDeterminantStats* stats = nullptr);
 
+/// Throws LimitExceeded (time) when `evaluations` determinants of a `size` × `size`
+/// matrix modulo a word-size prime would end past `budget`'s deadline. FLINT cannot
+/// interrupt one, and at size 2000 one takes seconds, so pencil_determinant and
+/// probe_pencil_determinant call this before their first; a caller whose pencil is
+/// long to build calls it before building it. Nothing without a deadline.
+void refuse_determinants_past_deadline(std::size_t size, std::size_t evaluations, const Budget& budget);
+
 /// The outcome of a probe at random points.
 enum class PencilProbe {
-  nonzero,      ///< the determinant (quotient) is not identically zero: proven
-  zero,         ///< it vanished at every probe: identically zero, up to the chance below
-  minor_zero,   ///< the divisor minor vanished at every probe: the quotient is unusable
+  nonzero,     ///< the determinant (quotient) is not identically zero: proven
+  zero,        ///< it vanished at every probe: identically zero, up to the chance below
+  minor_zero,  ///< the divisor minor vanished at every probe: the quotient is unusable
 };
 
 /// The cheap test for an identically zero determinant: evaluates at `trials`
 /// random points, each modulo a different 62-bit prime. A non-zero value proves
 /// the polynomial non-zero; a polynomial of degree d that is not zero vanishes at
 /// all trials with probability at most (d / 2^62)^trials (Schwartz–Zippel).
+/// Throws LimitExceeded when `budget` runs out, or before the first evaluation when
+/// the evaluations would end past its deadline (as pencil_determinant does).
 PencilProbe probe_pencil_determinant(const MatrixPencil& pencil, const std::vector<std::size_t>& divisor_minor,
-                                     std::uint64_t seed = 0x5eed, int trials = 2);
+                                     std::uint64_t seed = 0x5eed, int trials = 2, const Budget& budget = Budget());
 
 }  // namespace implicitizer
