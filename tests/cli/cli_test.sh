@@ -647,6 +647,18 @@ expect_within "resultant over 20000 identifiers" 16 5 "size_limit_exceeded.*2000
 # Interpolation overran --timeout 5 by 1.3-1.9 s: its uninterruptible row reductions
 # are now refused when they would end past the deadline.
 expect_within "interpolation within its timeout" 16 5 "time_limit_exceeded|size_limit_exceeded"   implicitize --x "s^40+t" --y "t^40+s" --z "s*t" --method interpolation --timeout 5
+# Exponents at the parser's limit, each once past its --timeout by minutes or hours:
+# the curve's 2000 x 2000 determinants (501,502 evaluations, FLINT cannot interrupt
+# one), the predicted support's box counted to the end, and the Bernstein conversions
+# of shape auto and of the patch bounds (O(n^2) exact operations a line, n = 1000).
+expect_within "a degree-1000 curve within its timeout" 16 5 "time_limit_exceeded" \
+  implicitize --x "t^1000+t^3" --y "t^999" --timeout 2
+expect_within "a box of 10^12 monomials within the timeout" 16 5 "time_limit_exceeded|size_limit_exceeded" \
+  implicitize --x "s^1000+t^999" --y "t^1000+s^997" --z "s^500*t^501" --method interpolation --timeout 2
+expect_within "shape auto of degree 1000 within its timeout" 16 5 "time_limit_exceeded" \
+  render --implicit "x^1000+y^999+z^998-1" --size 16x16 --timeout 2 -o "$WORK/d.png"
+expect_within "patch bounds of degree 1000 within the timeout" 16 5 "time_limit_exceeded" \
+  render --x "s^1000+t" --y "t^1000+s" --z "s*t" --size 16x16 --timeout 2 -o "$WORK/d.png"
 # --max-memory: a product of 10 million terms, no term limit, stopped by the memory limit.
 expect_json "memory limit" 5 "j['error']['code'] == 'memory_limit_exceeded' and j['error']['limit'] == 'memory'
 and '64 MiB' in j['error']['message']" groebner --max-memory 64M --json "(a+b+c+d+e+f+g+h)^30"

@@ -129,16 +129,16 @@ std::optional<mpq_class> local_bound(const Problem& p, const SubPiece& piece, co
   return std::nullopt;
 }
 
-std::pair<SubPiece, SubPiece> bisect(const Problem& p, const SubPiece& piece) {
+std::pair<SubPiece, SubPiece> bisect(const Problem& p, const SubPiece& piece, const Budget& budget) {
   const std::size_t axis = piece.box[1].second - piece.box[1].first > piece.box[0].second - piece.box[0].first ? 1 : 0;
   SubPiece lower{piece.box, {}, {}, {}, piece.depth + 1}, upper = lower;
   const mpq_class middle = (piece.box[axis].first + piece.box[axis].second) / 2;
   lower.box[axis].second = middle;
   upper.box[axis].first = middle;
-  std::tie(lower.n, upper.n) = split_along(piece.n, p.values, axis);
-  std::tie(lower.w, upper.w) = split_along(piece.w, p.values, axis);
+  std::tie(lower.n, upper.n) = split_along(piece.n, p.values, axis, budget, kWhere);
+  std::tie(lower.w, upper.w) = split_along(piece.w, p.values, axis, budget, kWhere);
   for (const BernsteinCoefficients& f : piece.forms) {
-    auto [l, u] = split_along(f, p.form_layout, axis);
+    auto [l, u] = split_along(f, p.form_layout, axis, budget, kWhere);
     lower.forms.push_back(std::move(l));
     upper.forms.push_back(std::move(u));
   }
@@ -186,7 +186,7 @@ Certificate certify_patch_to_surface(const Polynomial& q, const std::vector<Poly
       continue;
     }
     if (sub.depth >= max_depth) return Certificate{};
-    auto [lower, upper] = bisect(p, sub);
+    auto [lower, upper] = bisect(p, sub, budget);
     stack.push_back(std::move(lower));
     stack.push_back(std::move(upper));
   }

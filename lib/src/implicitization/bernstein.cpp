@@ -33,7 +33,7 @@ BernsteinCoefficients dense_coefficients(const Polynomial& p, const BernsteinLay
 // on [a, b]: p(t) = q(u) with t = a + (b − a)·u (Taylor shift, then scaling), then
 // b_k = Σ_{i ≤ k} C(k,i)/C(n,i)·q_i, the Bernstein form of q on [0, 1].
 void to_bernstein_along(BernsteinCoefficients& c, const BernsteinLayout& layout, std::size_t axis, const mpq_class& a,
-                        const mpq_class& b) {
+                        const mpq_class& b, const Budget& budget, const char* where) {
   const std::size_t n = layout.extents[axis] - 1;
   if (n == 0) return;
   const mpq_class h = b - a;
@@ -42,10 +42,12 @@ void to_bernstein_along(BernsteinCoefficients& c, const BernsteinLayout& layout,
   {
     std::vector<std::vector<mpz_class>> binomial(n + 1, std::vector<mpz_class>(n + 1));
     for (std::size_t k = 0; k <= n; ++k) {
+      budget.check(where);
       binomial[k][0] = 1;
       for (std::size_t i = 1; i <= k; ++i) binomial[k][i] = binomial[k - 1][i - 1] + (i < k ? binomial[k - 1][i] : 0);
     }
     for (std::size_t k = 0; k <= n; ++k) {
+      budget.check(where);
       for (std::size_t i = 0; i <= k; ++i) {
         ratio[k][i] = mpq_class(binomial[k][i], binomial[n][i]);
         ratio[k][i].canonicalize();
@@ -54,6 +56,7 @@ void to_bernstein_along(BernsteinCoefficients& c, const BernsteinLayout& layout,
   }
   std::vector<mpq_class> q(n + 1);
   layout.for_each_fiber(axis, [&](std::size_t first, std::size_t stride) {
+    budget.check(where);
     for (std::size_t i = 0; i <= n; ++i) q[i] = c[first + i * stride];
     for (std::size_t i = 0; i < n; ++i) {
       for (std::size_t k = n; k-- > i;) q[k] += a * q[k + 1];
@@ -71,11 +74,13 @@ void to_bernstein_along(BernsteinCoefficients& c, const BernsteinLayout& layout,
 // Splits Bernstein coefficients at the midpoint of parameter `axis` (de Casteljau
 // with weight 1/2): the coefficients of the lower and of the upper half.
 std::pair<BernsteinCoefficients, BernsteinCoefficients> split_along(const BernsteinCoefficients& c,
-                                                                    const BernsteinLayout& layout, std::size_t axis) {
+                                                                    const BernsteinLayout& layout, std::size_t axis,
+                                                                    const Budget& budget, const char* where) {
   const std::size_t n = layout.extents[axis] - 1;
   BernsteinCoefficients lower(c.size()), upper(c.size());
   std::vector<mpq_class> work(n + 1);
   layout.for_each_fiber(axis, [&](std::size_t first, std::size_t stride) {
+    budget.check(where);
     for (std::size_t i = 0; i <= n; ++i) work[i] = c[first + i * stride];
     lower[first] = work[0];
     upper[first + n * stride] = work[n];
@@ -95,8 +100,7 @@ BernsteinCoefficients bernstein_coefficients(const Polynomial& p, const Bernstei
                                              const BernsteinBox& box, const Budget& budget, const char* where) {
   BernsteinCoefficients c = dense_coefficients(p, layout);
   for (std::size_t j = 0; j < layout.extents.size(); ++j) {
-    to_bernstein_along(c, layout, j, box[j].first, box[j].second);
-    budget.check(where);
+    to_bernstein_along(c, layout, j, box[j].first, box[j].second, budget, where);
   }
   return c;
 }

@@ -72,14 +72,14 @@ std::optional<std::size_t> choose_axis(const Piece& piece, const Layout& layout)
   return best;
 }
 
-std::pair<Piece, Piece> bisect(const Piece& piece, const Layout& layout, std::size_t axis) {
+std::pair<Piece, Piece> bisect(const Piece& piece, const Layout& layout, std::size_t axis, const Budget& budget) {
   Piece lower{piece.box, {}, piece.depth + 1}, upper{piece.box, {}, piece.depth + 1};
   mpq_class middle = piece.box[axis].first + piece.box[axis].second;
   mpq_div_2exp(middle.get_mpq_t(), middle.get_mpq_t(), 1);
   lower.box[axis].second = middle;
   upper.box[axis].first = middle;
   for (const Coefficients& form : piece.forms) {
-    auto [l, u] = split_along(form, layout, axis);
+    auto [l, u] = split_along(form, layout, axis, budget, kWhere);
     lower.forms.push_back(std::move(l));
     upper.forms.push_back(std::move(u));
   }
@@ -192,8 +192,9 @@ struct BoundState {
 };
 
 // Bisects `piece` along `axis` into `next`.
-void push_halves(const Piece& piece, const Layout& layout, std::size_t axis, std::vector<Piece>& next) {
-  auto [lower, upper] = bisect(piece, layout, axis);
+void push_halves(const Piece& piece, const Layout& layout, std::size_t axis, std::vector<Piece>& next,
+                 const Budget& budget) {
+  auto [lower, upper] = bisect(piece, layout, axis, budget);
   next.push_back(std::move(lower));
   next.push_back(std::move(upper));
 }
@@ -221,7 +222,7 @@ std::vector<Piece> bound_level(std::vector<Piece>& level, BoundState& s, const B
       throw unbounded_error("could not prove the denominator zero-free on " + format_box(piece.box) + " within " +
                             std::to_string(s.params.max_denominator_depth) + " bisections");
     }
-    push_halves(piece, s.layout, *axis, next);
+    push_halves(piece, s.layout, *axis, next, budget);
   }
   for (auto& [piece, hull] : positive) {
     bool widens = false;
@@ -231,7 +232,7 @@ std::vector<Piece> bound_level(std::vector<Piece>& level, BoundState& s, const B
     const std::optional<std::size_t> axis =
         piece.depth < s.params.tightening_depth ? choose_axis(piece, s.layout) : std::nullopt;
     if (axis) {
-      push_halves(piece, s.layout, *axis, next);
+      push_halves(piece, s.layout, *axis, next, budget);
     } else {
       for (std::size_t i = 0; i < n; ++i) s.result.include(i, *hull.lo[i], *hull.hi[i]);
     }

@@ -16,8 +16,9 @@ int sign_of(const Rational& q) { return q > Rational(0) ? 1 : (q < Rational(0) ?
 
 // Power-basis coefficients q_0..q_n of a polynomial on [0, 1], replaced by its
 // Bernstein coefficients b_k = Σ_{i ≤ k} C(k, i)/C(n, i)·q_i: divide by C(n, i), then
-// the binomial transform as n rounds of adjacent sums.
-void power_to_bernstein(std::vector<mpq_class>& q) {
+// the binomial transform as n rounds of adjacent sums: O(n²) exact additions, so the
+// budget is checked every round (a degree of 1000 would otherwise run for hours).
+void power_to_bernstein(std::vector<mpq_class>& q, const Budget& budget) {
   const std::size_t n = q.size() - 1;
   mpz_class binomial = 1;
   for (std::size_t i = 1; i <= n; ++i) {
@@ -25,6 +26,7 @@ void power_to_bernstein(std::vector<mpq_class>& q) {
     q[i] /= binomial;
   }
   for (std::size_t round = 1; round <= n; ++round) {
+    budget.check(kWhere);
     for (std::size_t k = n; k >= round; --k) q[k] += q[k - 1];
   }
 }
@@ -58,7 +60,7 @@ struct Piece {
 // The Bernstein coefficients of the two halves of `patch` along its axis `axis` (0 or
 // 1), by de Casteljau's algorithm at 1/2 on every line of coefficients along it:
 // exact, and far cheaper than composing F with each half's affine map again.
-std::pair<BernsteinPatch, BernsteinPatch> halve(const BernsteinPatch& patch, std::size_t axis) {
+std::pair<BernsteinPatch, BernsteinPatch> halve(const BernsteinPatch& patch, std::size_t axis, const Budget& budget) {
   BernsteinPatch lower = patch, upper = patch;
   const std::size_t n = (axis == 0 ? patch.extent0 : patch.extent1) - 1;
   const std::size_t lines = axis == 0 ? patch.extent1 : patch.extent0;
@@ -66,6 +68,7 @@ std::pair<BernsteinPatch, BernsteinPatch> halve(const BernsteinPatch& patch, std
   std::vector<mpq_class> work(n + 1);
   for (std::size_t line = 0; line < lines; ++line) {
     const std::size_t first = axis == 0 ? line : line * patch.extent1;
+    budget.check(kWhere);  // O(n²) exact operations a line
     for (std::size_t k = 0; k <= n; ++k) work[k] = patch.b[first + k * stride];
     // After round r, work[0] is the lower half's coefficient r and work[n − r] the
     // upper half's coefficient n − r.
@@ -111,13 +114,13 @@ BernsteinPatch bernstein_on(const Facet& facet, const std::vector<Interval>& sid
   std::vector<mpq_class> line(patch.extent0);
   for (std::size_t j = 0; j < patch.extent1; ++j) {
     for (std::size_t i = 0; i < patch.extent0; ++i) line[i] = patch.b[i * patch.extent1 + j];
-    power_to_bernstein(line);
+    power_to_bernstein(line, budget);
     for (std::size_t i = 0; i < patch.extent0; ++i) patch.b[i * patch.extent1 + j] = line[i];
   }
   line.resize(patch.extent1);
   for (std::size_t i = 0; i < patch.extent0; ++i) {
     for (std::size_t j = 0; j < patch.extent1; ++j) line[j] = patch.b[i * patch.extent1 + j];
-    power_to_bernstein(line);
+    power_to_bernstein(line, budget);
     for (std::size_t j = 0; j < patch.extent1; ++j) patch.b[i * patch.extent1 + j] = line[j];
   }
   return patch;
@@ -213,7 +216,7 @@ class BoundarySign {
       }
       // Constant on the piece: its corners, which agreed, are all its coefficients.
       if (!longest) continue;
-      auto [low, high] = halve(piece.patch, *longest);
+      auto [low, high] = halve(piece.patch, *longest, budget_);
       const Rational middle = (piece.sides[*longest].first + piece.sides[*longest].second) / Rational(2);
       Piece lower{piece.sides, std::move(low), piece.depth + 1}, upper{piece.sides, std::move(high), piece.depth + 1};
       lower.sides[*longest].second = middle;

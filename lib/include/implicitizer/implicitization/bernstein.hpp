@@ -51,9 +51,11 @@ BernsteinCoefficients dense_coefficients(const Polynomial& p, const BernsteinLay
 
 /// Rewrites power-basis coefficients in variable `axis` as Bernstein coefficients on
 /// [a, b]: p(t) = q(u) with t = a + (b − a)·u (Taylor shift, then scaling), then
-/// b_k = Σ_{i ≤ k} C(k,i)/C(n,i)·q_i, the Bernstein form of q on [0, 1].
+/// b_k = Σ_{i ≤ k} C(k,i)/C(n,i)·q_i, the Bernstein form of q on [0, 1]. O(n²) exact
+/// operations per line along the axis: `budget` is checked per line (stops name
+/// `where`).
 void to_bernstein_along(BernsteinCoefficients& c, const BernsteinLayout& layout, std::size_t axis, const mpq_class& a,
-                        const mpq_class& b);
+                        const mpq_class& b, const Budget& budget, const char* where);
 
 /// The Bernstein coefficients of `p` over `box` in `layout` (every axis converted;
 /// checks `budget` per axis).
@@ -61,8 +63,10 @@ BernsteinCoefficients bernstein_coefficients(const Polynomial& p, const Bernstei
                                              const BernsteinBox& box, const Budget& budget, const char* where);
 
 /// Splits Bernstein coefficients at the midpoint of variable `axis` (de Casteljau with
-/// weight 1/2): the coefficients of the lower and of the upper half.
+/// weight 1/2): the coefficients of the lower and of the upper half. O(n²) exact
+/// operations per line: `budget` is checked per line (stops name `where`).
 std::pair<BernsteinCoefficients, BernsteinCoefficients> split_along(const BernsteinCoefficients& c,
-                                                                    const BernsteinLayout& layout, std::size_t axis);
+                                                                    const BernsteinLayout& layout, std::size_t axis,
+                                                                    const Budget& budget, const char* where);
 
 }  // namespace implicitizer
