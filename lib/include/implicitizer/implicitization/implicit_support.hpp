@@ -65,9 +65,9 @@ double space_monomial_count(std::int32_t d);
 
 /// The predicted support of the implicit equation of a surface in two parameters
 /// (three coordinates), as the header describes. nullopt for other parametrizations
-/// and when the box has more than kMaxPredictedBox monomials. Enumerating a box of
-/// that size takes tens of milliseconds, so `budget` is checked as it goes (stops
-/// name "the predicted support").
+/// and when the box has more than kMaxPredictedBox monomials. A box near that size
+/// outlasts a short deadline, so `budget` is checked as it goes (stops name "the
+/// predicted support").
 std::optional<ImplicitSupport> predict_implicit_support(const Parametrization& parametrization,
                                                         const Budget& budget = Budget());
 
