@@ -3,11 +3,12 @@
 Singular's and Macaulay2's, in one run, each as a whole process.
 
     python3 bench/groebner_peers.py [--ideals cyclic5,katsura5,...] [--timeout S]
-        [--methods modular,auto] [--giac /tmp/giac_gbasis] [--bin build/bin/implicitizer]
+        [--methods modular,auto,f4:random_primes] [--giac /tmp/giac_gbasis] [--bin build/bin/implicitizer]
         [--peers giac,giac-certified,singular,m2]
         [--giac-certified /tmp/giac_gbasis_certified] [--before OTHER/build/bin/implicitizer]
 
-Ours runs `implicitizer groebner --order grevlex --method M --json` and the table also
+Ours runs `implicitizer groebner --order grevlex --method M --json` (a method M:P adds
+`--proof P`: f4:random_primes is the labelled unproven mode) and the table also
 shows, from its JSON, the time of the runs modulo primes and of the proof over Q.
 With --before, every method also runs with that binary (another commit's build),
 just before ours on the same ideal, so that the two are compared within one run.
@@ -47,14 +48,17 @@ def timed(command, timeout, stdin=None):
 
 
 def ours(binary, ideal, method, timeout):
+    """`method` is a --method, or METHOD:PROOF for a --proof (f4:random_primes)."""
+    method, _, proof = method.partition(":")
     command = [binary, "groebner", "--vars", ",".join(ideal["vars"]), "--order", "grevlex", "--method", method,
-               "--json", "--timeout", str(timeout)] + ideal["polys"]
+               "--json", "--timeout", str(timeout)] + (["--proof", proof] if proof else []) + ideal["polys"]
     seconds, out = timed(command, timeout + 5)
     if seconds is None:
         return None, out
     answer = json.loads(out)
     modular = answer["stats"].get("modular", {})
-    detail = "%d elements, route %s" % (len(answer["basis"]), answer.get("method", "?"))
+    detail = "%d elements, route %s%s" % (len(answer["basis"]), answer.get("method", "?"),
+                                           "" if answer.get("proven", True) else ", NOT proven")
     if modular:
         detail += ": %d primes (%d replayed), modular %.2f s, lift %.2f s, proof %.2f s" % (
             modular.get("primes", 0), modular.get("replayed_primes", 0), modular.get("modular_ms", 0) / 1000,

@@ -20,8 +20,9 @@ namespace {
 constexpr const char* kCommand = "groebner";
 
 std::vector<OptionSpec> option_specs() {
-  std::vector<OptionSpec> spec = {{"vars", true},   {"order", true},    {"weights", true}, {"eliminate", true},
-                                  {"method", true}, {"modular", false}, {"json", false},   {"help", false}};
+  std::vector<OptionSpec> spec = {{"vars", true},      {"order", true},  {"weights", true},
+                                  {"eliminate", true}, {"method", true}, {"modular", false},
+                                  {"proof", true},     {"json", false},  {"help", false}};
   spec.insert(spec.end(), std::begin(kBuchbergerOptions), std::end(kBuchbergerOptions));
   return spec;
 }
@@ -67,6 +68,7 @@ int run_groebner_command(std::span<const std::string> args) {
       }
       request.method = GroebnerMethod::modular;
     }
+    if (const auto proof = read_choice(arguments, "proof", parse_groebner_proof, report.json)) request.proof = *proof;
     request.timeout_seconds = timeout_from(arguments);
     variant = buchberger_variant_from(arguments);
     budget = budget_from(arguments);
@@ -83,6 +85,10 @@ int run_groebner_command(std::span<const std::string> args) {
       std::cout << encode_groebner_response(answer) << '\n';
     } else {
       print_polynomials(answer.elimination_ideal ? *answer.elimination_ideal : answer.basis);
+      if (!answer.route.proven()) {
+        std::cerr << "note: not proven; the basis agrees with the reduced bases modulo "
+                  << answer.route.modular->random_primes.size() << " random primes (docs/algorithms.md)\n";
+      }
     }
   });
 }

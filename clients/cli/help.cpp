@@ -99,6 +99,12 @@ options:
                         buchberger; modular: modulo primes, lifted, proven over Q;
                         f4: the same with F4 modulo each prime
   --modular             the same as --method modular
+  --proof P             exact (default): the modular routes prove their basis over Q;
+                        random_primes: they skip the proof and check the basis modulo
+                        2 random primes instead: faster, NOT proven (a wrong basis
+                        passes with probability below 10^-19 unless an integer fixed
+                        by the ideal has over 10^9 bits; docs/algorithms.md); a note
+                        on stderr says so, and --json has "proven": false
   --timeout SECONDS     wall-time limit, > 0 (default: none)
   --max-terms N         largest number of terms of any intermediate polynomial (default 0 = none)
   --max-memory SIZE     memory the computation may hold: 512 (MiB), 512M, 2G (default: none);

@@ -215,18 +215,22 @@ class Client:
         return self._post_json("/v1/implicitize", _without_none(
             x=x, y=y, z=z, parameters=parameters, method=method, timeout_ms=timeout_ms))
 
-    def groebner(self, polynomials, variables=None, order=None, weights=None, eliminate=None, timeout_ms=None):
+    def groebner(self, polynomials, variables=None, order=None, weights=None, eliminate=None, timeout_ms=None,
+                 method=None, proof=None):
         """POST /v1/groebner: the reduced Gröbner basis of the ideal of `polynomials`.
 
         `variables` (largest first) defaults to the identifiers in order of first
         appearance; `order` is "lex", "grlex" or "grevlex" (default); `weights` (one
         integer per variable) makes it a weighted order; `eliminate` lists variables
-        to eliminate, adding `elimination_ideal` to the answer. Returns `basis`,
-        `order`, `stats`, `elapsed_ms` (and `elimination_ideal`).
+        to eliminate, adding `elimination_ideal` to the answer; `method` is "auto"
+        (default), "buchberger", "modular" or "f4"; `proof` "exact" (default) or
+        "random_primes" (faster, not proven: the answer says `proven` false). Returns
+        `basis`, `order`, `method`, `proven`, `stats`, `elapsed_ms` (and
+        `elimination_ideal`).
         """
         return self._post_json("/v1/groebner", _without_none(
             polynomials=list(polynomials), variables=variables, order=order, weights=weights, eliminate=eliminate,
-            timeout_ms=timeout_ms))
+            timeout_ms=timeout_ms, method=method, proof=proof))
 
     def resultant(self, f, g, variable, timeout_ms=None):
         """POST /v1/resultant: Res_variable(f, g). Returns `resultant`, `variables`,

@@ -237,6 +237,13 @@ expect_json "groebner --modular" 0 "
 j['method'] == 'modular' and j['basis'] == ['x-y', 'y^2-1/2'] and j['stats']['modular']['proven'] is True" \
   groebner --modular --json "x^2+y^2-1" "x-y"
 expect_status "groebner --method bogus" 2 "method" groebner --method bogus "x"
+expect_json "groebner --proof random_primes is labelled" 0 "
+j['method'] == 'f4' and j['basis'] == ['x-y', 'y^2-1/2'] and j['proven'] is False and
+len(j['stats']['modular']['random_primes']) == 2" \
+  groebner --method f4 --proof random_primes --json "x^2+y^2-1" "x-y"
+expect_status "groebner --proof random_primes notes it on stderr" 0 "not proven.*2 random primes" \
+  groebner --method f4 --proof random_primes "x^2+y^2-1" "x-y"
+expect_status "groebner --proof bogus" 2 "proof" groebner --proof bogus "x"
 expect_status "resultant needs two parameters" 3 "method_not_applicable" implicitize --x s --y t --z u --method resultant
 if [[ -n $HARD ]]; then
   expect_json "auto takes the resultant on tp_22" 0 "

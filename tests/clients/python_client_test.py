@@ -145,6 +145,13 @@ class LibraryTest(unittest.TestCase, PngChecks):
         weighted = self.client.groebner(["x^2+y", "y^2-x"], variables=["x", "y"], weights=[1, 2])
         self.assertTrue(weighted["order"].startswith("weighted(1,2"), weighted["order"])
 
+    def test_groebner_unproven(self):
+        exact = self.client.groebner(["x^2+y", "y^2-x"], method="f4")
+        unproven = self.client.groebner(["x^2+y", "y^2-x"], method="f4", proof="random_primes")
+        self.assertEqual((exact["proven"], unproven["proven"]), (True, False))
+        self.assertEqual(unproven["basis"], exact["basis"])
+        self.assertEqual(len(unproven["stats"]["modular"]["random_primes"]), 2)
+
     def test_resultant(self):
         answer = self.client.resultant("t^2+x", "y*t+1", "t")
         self.assertEqual(answer["resultant"], "x*y^2+1")

@@ -24,6 +24,9 @@ TEST(DecodeGroebnerRequest, ReadsEveryField) {
   EXPECT_EQ(*r.weights, (std::vector<int>{1, 2, 3}));
   EXPECT_EQ(*r.eliminate, (std::vector<std::string>{"s"}));
   EXPECT_DOUBLE_EQ(*r.timeout_seconds, 0.0);
+  EXPECT_EQ(r.proof, GroebnerProof::exact);  // the default
+  EXPECT_EQ(decode_groebner_request(R"({"polynomials":["x"],"proof":"random_primes"})").proof,
+            GroebnerProof::random_primes);
 }
 
 TEST(DecodeGroebnerRequest, RefusesBadFields) {
@@ -33,6 +36,32 @@ TEST(DecodeGroebnerRequest, RefusesBadFields) {
             "weights[0]");
   EXPECT_EQ(input_error_of([] { decode_groebner_request(R"({"polynomials":["x"],"ordering":"lex"})"); }).code(),
             "unknown_field");
+  const InputError proof = input_error_of([] { decode_groebner_request(R"({"polynomials":["x"],"proof":"maybe"})"); });
+  EXPECT_EQ(proof.code(), "unknown_proof");
+  EXPECT_EQ(proof.field(), "proof");
+  EXPECT_EQ(input_error_of([] { decode_groebner_request(R"({"polynomials":["x"],"proof":false})"); }).field(), "proof");
+}
+
+// The labelled unproven answer: the modular route's basis, "proven": false, and the
+// random primes it was checked on. Buchberger's answer is exact whatever was asked.
+TEST(AnswerGroebnerRequest, UnprovenIsLabelled) {
+  GroebnerRequest r;
+  r.polynomials = {"x^2+y", "y^2-x"};
+  r.order = MonomialOrder::lex();
+  r.proof = GroebnerProof::random_primes;
+  r.method = GroebnerMethod::f4;
+  const GroebnerAnswer a = answer_groebner_request(r);
+  EXPECT_FALSE(a.route.proven());
+  const std::string json = encode_groebner_response(a);
+  EXPECT_EQ(json.rfind(R"({"basis":["y^4+y","x-y^2"],"order":"lex","method":"f4","proven":false,"stats":{)", 0), 0u)
+      << json;
+  ASSERT_TRUE(a.route.modular);
+  EXPECT_EQ(a.route.modular->random_primes.size(), kUnprovenRandomChecks);
+  EXPECT_NE(json.find(R"("random_primes":[)" + std::to_string(a.route.modular->random_primes.front()) + ","),
+            std::string::npos)
+      << json;
+  r.method = GroebnerMethod::buchberger;
+  EXPECT_TRUE(answer_groebner_request(r).route.proven());
 }
 
 TEST(AnswerGroebnerRequest, ReducedBasisAndElimination) {
@@ -41,7 +70,9 @@ TEST(AnswerGroebnerRequest, ReducedBasisAndElimination) {
   r.order = MonomialOrder::lex();
   const GroebnerAnswer a = answer_groebner_request(r);
   const std::string json = encode_groebner_response(a);
-  EXPECT_EQ(json.rfind(R"({"basis":["y^4+y","x-y^2"],"order":"lex","method":"buchberger","stats":{"pairs":)", 0), 0u)
+  EXPECT_EQ(json.rfind(
+                R"({"basis":["y^4+y","x-y^2"],"order":"lex","method":"buchberger","proven":true,"stats":{"pairs":)", 0),
+            0u)
       << json;
   EXPECT_EQ(json.find("elimination_ideal"), std::string::npos);
   EXPECT_EQ(json.find(R"("modular":{)"), std::string::npos) << json;
@@ -49,7 +80,9 @@ TEST(AnswerGroebnerRequest, ReducedBasisAndElimination) {
   GroebnerRequest m = r;
   m.method = GroebnerMethod::modular;
   const std::string modular = encode_groebner_response(answer_groebner_request(m));
-  EXPECT_EQ(modular.rfind(R"({"basis":["y^4+y","x-y^2"],"order":"lex","method":"modular","stats":{"pairs":)", 0), 0u)
+  EXPECT_EQ(modular.rfind(
+                R"({"basis":["y^4+y","x-y^2"],"order":"lex","method":"modular","proven":true,"stats":{"pairs":)", 0),
+            0u)
       << modular;
   EXPECT_NE(modular.find(R"("modular":{"primes":)"), std::string::npos) << modular;
   EXPECT_NE(modular.find(R"("proven":true)"), std::string::npos) << modular;

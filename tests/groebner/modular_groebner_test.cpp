@@ -2,7 +2,8 @@
 // multi-modular basis equals the rational one on the property sweep's random ideals
 // under every order, on Katsura and Cyclic, and on ideals whose coefficients need
 // many primes; unlucky and bad primes are detected when small primes are forced; the
-// proof rejects what is not a basis; limits stop it.
+// proof rejects what is not a basis; the random checks of the unproven mode refute a
+// candidate the sequence's primes confirm; limits stop it.
 
 #include "implicitizer/groebner/modular_groebner.hpp"
 
@@ -146,6 +147,58 @@ TEST(ModularGroebnerTest, WithoutProofTheAffineCandidate) {
     EXPECT_EQ(print_all(r.basis), print_all(compute_groebner_basis(generators).basis));
     EXPECT_FALSE(stats.proven);
     EXPECT_EQ(stats.verification_pairs, 0u);
+  }
+}
+
+// The hole the random checks close. x − c·y with c = 1/2 + p1·p2, p1 and p2 the first
+// two primes after 1000: modulo both, c is 1/2, so the candidate lifted from p1 is
+// x − y/2 and the sequence's next prime, p2, confirms it. Without the proof and
+// without random checks that wrong basis is the answer; with them, two random 62-bit
+// primes (which cannot divide p1·p2) refute it, join the lift, and the right c is
+// reconstructed and confirmed on two fresh random primes.
+TEST(ModularGroebnerTest, RandomChecksRefuteACandidateTheSequenceConfirms) {
+  const RingPtr ring = Ring::make({"x", "y"});
+  const std::string c = "(1+2*1009*1013)/2";  // 1009 and 1013: the primes after 1000
+  const auto generators = parse_all({"x-" + c + "*y"}, ring);
+  const std::vector<std::string> right = print_all(compute_groebner_basis(generators).basis);
+  ModularGroebnerParams params;
+  params.first_prime = 1000;
+  params.prove = false;
+  params.threads = 1;
+  ModularGroebnerStats sequence_only;
+  EXPECT_EQ(print_all(compute_groebner_basis_modular(generators, params, &sequence_only).basis),
+            (std::vector<std::string>{"x-1/2*y"}));
+  EXPECT_TRUE(sequence_only.random_primes.empty());
+
+  params.random_checks = 2;
+  ModularGroebnerStats stats;
+  EXPECT_EQ(print_all(compute_groebner_basis_modular(generators, params, &stats).basis), right);
+  EXPECT_FALSE(stats.proven);
+  EXPECT_EQ(stats.rejected_candidates, 1u);
+  ASSERT_EQ(stats.random_primes.size(), 2u);
+  for (const std::uint64_t p : stats.random_primes) {
+    EXPECT_GE(p, std::uint64_t{1} << 61);
+    EXPECT_LT(p, std::uint64_t{1} << 62);
+  }
+}
+
+// The labelled unproven basis of Katsura and Cyclic (homogenized runs taken to h = 1)
+// is the proven one, checked on two random primes and not called proven.
+TEST(ModularGroebnerTest, UnprovenWithRandomChecksIsTheBasis) {
+  const RingPtr k = Ring::make({"u0", "u1", "u2", "u3", "u4"});
+  const RingPtr c = Ring::make({"a", "b", "c", "d", "e"});
+  for (const auto& generators : {testing::katsura(k), testing::cyclic(c)}) {
+    ModularGroebnerParams params;
+    params.algorithm = ModularAlgorithm::f4;
+    params.prove = false;
+    params.random_checks = 2;
+    ModularGroebnerStats stats;
+    const GroebnerResult r = compute_groebner_basis_modular(generators, params, &stats);
+    EXPECT_EQ(print_all(r.basis), print_all(modular(generators).basis));
+    EXPECT_FALSE(stats.proven);
+    EXPECT_EQ(stats.verification_pairs, 0u);
+    EXPECT_EQ(stats.random_primes.size(), 2u);
+    EXPECT_EQ(stats.checking_primes, 2u);
   }
 }
 

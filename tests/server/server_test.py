@@ -258,6 +258,21 @@ def test_groebner(s):
     status, _, body = s.post_json("/v1/groebner", {"polynomials": ["x-s^2", "y-s^3"], "variables": ["s", "x", "y"],
                                                    "eliminate": ["s"]})
     check(status == 200 and body.get("elimination_ideal") == ["x^3-y^2"], "groebner elimination %r" % body)
+    # The labelled unproven mode: never served from an exact answer's cache entry, nor
+    # an exact request from its entry.
+    katsura = {"polynomials": ["a+2*b+2*c-1", "a^2+2*b^2+2*c^2-a", "2*a*b+2*b*c-b"], "method": "f4"}
+    status, headers, exact = s.post_json("/v1/groebner", katsura)
+    check(status == 200 and exact["proven"] is True and exact["stats"]["modular"]["random_primes"] == [],
+          "groebner proven by default %r" % exact)
+    status, headers, unproven = s.post_json("/v1/groebner", dict(katsura, proof="random_primes"))
+    check(status == 200 and headers.get("x-cache") == "miss", "an unproven request misses the exact answer: %s" % headers)
+    check(unproven["proven"] is False and unproven["basis"] == exact["basis"]
+          and len(unproven["stats"]["modular"]["random_primes"]) == 2, "groebner unproven %r" % unproven)
+    status, headers, again = s.post_json("/v1/groebner", katsura)
+    check(status == 200 and headers.get("x-cache") == "hit" and again["proven"] is True, "the exact answer stays cached")
+    status, _, body = s.post_json("/v1/groebner", dict(katsura, proof="probably"))
+    check(status == 400 and body["error"]["code"] == "unknown_proof" and body["error"]["field"] == "proof",
+          "unknown proof %r" % body)
 
 
 # Degrees 12 and 11 in t with dense coefficients: minutes of work, so any timeout here stops it.

@@ -16,7 +16,7 @@ constexpr GroebnerMethod kAutoModularRoute = GroebnerMethod::f4;
 // Runs `buchberger(params)` over ℚ or `modular(modular_params, stats)` modulo primes
 // as `method` says; `auto` gives Buchberger its head start first.
 template <class Buchberger, class Modular>
-auto compute_by_method(GroebnerMethod method, const BuchbergerParams& params, GroebnerRoute* route,
+auto compute_by_method(GroebnerMethod method, const BuchbergerParams& params, GroebnerRoute* route, GroebnerProof proof,
                        Buchberger buchberger, Modular modular) {
   GroebnerRoute answered;
   const auto by_modular = [&](GroebnerMethod modular_route) {
@@ -24,6 +24,10 @@ auto compute_by_method(GroebnerMethod method, const BuchbergerParams& params, Gr
     modular_params.buchberger = params;
     modular_params.algorithm =
         modular_route == GroebnerMethod::f4 ? ModularAlgorithm::f4 : ModularAlgorithm::buchberger;
+    if (proof == GroebnerProof::random_primes) {
+      modular_params.prove = false;
+      modular_params.random_checks = kUnprovenRandomChecks;
+    }
     ModularGroebnerStats stats;
     auto result = modular(modular_params, stats);
     answered = {modular_route, stats};
@@ -74,10 +78,20 @@ const char* to_string(GroebnerMethod method) {
   return "auto";
 }
 
+GroebnerProof parse_groebner_proof(const std::string& name) {
+  for (GroebnerProof p : {GroebnerProof::exact, GroebnerProof::random_primes}) {
+    if (name == to_string(p)) return p;
+  }
+  throw InputError("unknown_proof", "unknown proof '" + name + "' (expected exact or random_primes)").in_field("proof");
+}
+
+const char* to_string(GroebnerProof proof) { return proof == GroebnerProof::random_primes ? "random_primes" : "exact"; }
+
 GroebnerResult compute_groebner_basis_by_method(std::span<const Polynomial> generators, GroebnerMethod method,
-                                                const BuchbergerParams& params, GroebnerRoute* route) {
+                                                const BuchbergerParams& params, GroebnerRoute* route,
+                                                GroebnerProof proof) {
   return compute_by_method(
-      method, params, route, [&](const BuchbergerParams& p) { return compute_groebner_basis(generators, p); },
+      method, params, route, proof, [&](const BuchbergerParams& p) { return compute_groebner_basis(generators, p); },
       [&](const ModularGroebnerParams& p, ModularGroebnerStats& stats) {
         return compute_groebner_basis_modular(generators, p, &stats);
       });
@@ -85,9 +99,9 @@ GroebnerResult compute_groebner_basis_by_method(std::span<const Polynomial> gene
 
 EliminationResult eliminate_by_method(std::span<const Polynomial> generators, std::span<const std::string> names,
                                       GroebnerMethod method, const BuchbergerParams& params,
-                                      const MonomialOrder& remaining_order, GroebnerRoute* route) {
+                                      const MonomialOrder& remaining_order, GroebnerRoute* route, GroebnerProof proof) {
   return compute_by_method(
-      method, params, route,
+      method, params, route, proof,
       [&](const BuchbergerParams& p) { return eliminate(generators, names, p, remaining_order); },
       [&](const ModularGroebnerParams& p, ModularGroebnerStats& stats) {
         return eliminate_modular(generators, names, p, remaining_order, &stats);

@@ -18,6 +18,7 @@
 #include "implicitizer/modular/crt_lift.hpp"
 #include "implicitizer/modular/one_per_thread.hpp"
 #include "implicitizer/modular/prime_sequence.hpp"
+#include "implicitizer/modular/random_prime.hpp"
 #include "int_polynomial.hpp"
 #include "mod_polynomial.hpp"
 #include "rational_proof.hpp"
@@ -372,35 +373,16 @@ class ModularDriver {
       const bool audit = trace_ != nullptr && stats_.primes >= next_audit_;
       if (audit) next_audit_ *= 4;
       const bool replay = !rejected && !audit && (!candidate || (params_.prove && has_learned_leads(*candidate)));
-      const std::vector<PrimeRun> batch = next_batch(replay);
+      // The labelled unproven answer is checked on random primes (the header says why).
+      const bool random = candidate && !params_.prove && params_.random_checks > 0;
+      const std::vector<PrimeRun> batch = next_batch(replay, random);
       rejected = false;
       if (trace_ != nullptr && leaves_trace(batch)) {
         drop_trace();
         candidate.reset();
       }
       if (candidate) {
-        const Stopwatch check_timer;
-        std::vector<IntPolynomial> integers;
-        for (const auto& g : *candidate) integers.push_back(detail::to_int_polynomial(g));
-        const bool confirmed = confirms(*candidate, integers, batch);
-        stats_.lift_ms += check_timer.elapsed_ms();
-        if (confirmed) {
-          stats_.checking_primes = batch.size();
-          if (!params_.prove) return *candidate;
-          const Stopwatch timer;
-          const detail::ProofOutcome proof =
-              detail::prove_groebner_basis(*run_ring_, generators_, integers, params_.buchberger, threads_);
-          stats_.verification_pairs += proof.pairs;
-          stats_.proof_content_divisions += proof.content_divisions;
-          stats_.verify_ms += timer.elapsed_ms();
-          if (proof.proven) {
-            stats_.proven = true;
-            return *candidate;
-          }
-          // Confirmed yet not a Gröbner basis: replays or the learned prime misled the lift;
-          // start again without replays.
-          if (trace_ != nullptr) drop_trace();
-        }
+        if (accepts(*candidate, batch, random)) return *candidate;
         ++stats_.rejected_candidates;
         stats_.checking_primes = 0;  // absorbed below, with the others
         candidate.reset();
@@ -425,22 +407,55 @@ class ModularDriver {
   }
 
  private:
+  // Whether `candidate` is the answer: confirmed by `batch` (every prime of it when
+  // `random`) and, with `prove`, proven over ℚ.
+  bool accepts(const std::vector<Polynomial>& candidate, const std::vector<PrimeRun>& batch, bool random) {
+    const Stopwatch check_timer;
+    std::vector<IntPolynomial> integers;
+    for (const auto& g : candidate) integers.push_back(detail::to_int_polynomial(g));
+    const bool confirmed = confirms(candidate, integers, batch, random);
+    stats_.lift_ms += check_timer.elapsed_ms();
+    if (!confirmed) return false;
+    stats_.checking_primes = batch.size();
+    if (random) {
+      for (const PrimeRun& run : batch) stats_.random_primes.push_back(run.prime);
+    }
+    if (!params_.prove) return true;
+    const Stopwatch timer;
+    const detail::ProofOutcome proof =
+        detail::prove_groebner_basis(*run_ring_, generators_, integers, params_.buchberger, threads_);
+    stats_.verification_pairs += proof.pairs;
+    stats_.proof_content_divisions += proof.content_divisions;
+    stats_.verify_ms += timer.elapsed_ms();
+    if (proof.proven) {
+      stats_.proven = true;
+      return true;
+    }
+    // Confirmed yet not a Gröbner basis: replays or the learned prime misled the lift;
+    // start again without replays.
+    if (trace_ != nullptr) drop_trace();
+    return false;
+  }
+
   // The next primes that are not bad, `batch_size_` of them run in parallel. The
   // first batch is one prime on the calling thread: small ideals take well under a
   // millisecond a prime, less than starting a thread costs (measured 4–5 ms on a busy
   // machine, a scheduler tick), so more threads are used only when a prime took
-  // longer than kThreadWorthMs.
-  std::vector<PrimeRun> next_batch(bool replay) {
+  // longer than kThreadWorthMs. With `random`, `random_checks` primes drawn at random
+  // instead of the sequence's, run in full.
+  std::vector<PrimeRun> next_batch(bool replay, bool random) {
     const Stopwatch timer;
     std::vector<PrimeRun> batch;
-    const std::size_t wanted = stats_.primes == 0 ? 1 : batch_size_;
+    const std::size_t wanted = random ? params_.random_checks : stats_.primes == 0 ? 1 : batch_size_;
     while (batch.size() < wanted) {
       if (stats_.primes + stats_.bad_primes >= kMaxPrimes) {
         throw LimitExceeded(Limit::size, "modular Groebner basis: no stable reconstruction after " +
                                              std::to_string(kMaxPrimes) + " primes");
       }
       std::vector<std::uint64_t> primes;
-      for (std::size_t i = batch.size(); i < wanted; ++i) primes.push_back(primes_.next());
+      if (random && !random_primes_) random_primes_.emplace();  // seeded only when needed
+      for (std::size_t i = batch.size(); i < wanted; ++i)
+        primes.push_back(random ? random_primes_->next() : primes_.next());
       // The first prime run with F4 (one, on this thread) records its path.
       const bool learning = params_.trace && params_.algorithm == ModularAlgorithm::f4 && !stats_.trace_dropped &&
                             trace_ == nullptr && primes.size() == 1;
@@ -526,10 +541,12 @@ class ModularDriver {
   }
 
   // Whether every prime of `batch` whose basis has the candidate's leading monomials
-  // agrees with the candidate, and at least one does.
+  // agrees with the candidate, and at least one does; with `every`, whether every
+  // prime agrees (the random checks: a prime with other leading monomials may be the
+  // lucky one that shows the candidate's to be wrong).
   // `integers` is the candidate as primitive integer polynomials.
   bool confirms(const std::vector<Polynomial>& candidate, const std::vector<IntPolynomial>& integers,
-                const std::vector<PrimeRun>& batch) const {
+                const std::vector<PrimeRun>& batch, bool every) const {
     const std::vector<std::int32_t> key = leading_key(*ring_, candidate);
     std::size_t agreeing = 0;
     for (const PrimeRun& run : batch) {
@@ -538,7 +555,7 @@ class ModularDriver {
         continue;
       }
       // Other leading monomials: an unlucky prime (or the candidate is), no verdict.
-      if (leading_key(*ring_, run.basis) == key) return false;
+      if (every || leading_key(*ring_, run.basis) == key) return false;
     }
     return agreeing > 0;
   }
@@ -550,6 +567,7 @@ class ModularDriver {
   Projection projection_;
   ModularGroebnerStats& stats_;
   PrimeSequence primes_;
+  std::optional<RandomPrimes> random_primes_;
   std::size_t threads_ = 1;
   std::size_t batch_size_ = 1;            // primes per batch after the first (threads_ once a prime is worth a thread)
   std::size_t next_reconstruction_ = 1;   // lifted primes needed before the next reconstruction

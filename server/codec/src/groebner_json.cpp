@@ -19,10 +19,13 @@ GroebnerRequest decode_groebner_request(std::string_view body, const JsonParams&
   if (const auto* v = reader.take("eliminate")) request.eliminate = json::read_strings(*v, "eliminate");
   std::optional<std::string> method;
   if (const auto* v = reader.take("method")) method = json::read_string(*v, "method");
+  std::optional<std::string> proof;
+  if (const auto* v = reader.take("proof")) proof = json::read_string(*v, "proof");
   if (const auto* v = reader.take("timeout_ms")) request.timeout_seconds = json::read_timeout_seconds(*v);
-  reader.finish("polynomials, variables, order, weights, eliminate, method, timeout_ms");
+  reader.finish("polynomials, variables, order, weights, eliminate, method, proof, timeout_ms");
   if (order) request.order = json::parse_choice(*order, "order", &MonomialOrder::from_name);
   if (method) request.method = json::parse_choice(*method, "method", parse_groebner_method);
+  if (proof) request.proof = json::parse_choice(*proof, "proof", parse_groebner_proof);
   return request;
 }
 
@@ -35,6 +38,8 @@ std::string encode_groebner_response(const GroebnerAnswer& answer) {
     json::write_string(w, answer.order);
     w.Key("method");
     json::write_string(w, to_string(answer.route.method));
+    w.Key("proven");
+    w.Bool(answer.route.proven());
     w.Key("stats");
     w.StartObject();
     json::write_buchberger_stats_members(w, answer.stats);

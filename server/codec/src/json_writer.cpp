@@ -70,6 +70,10 @@ void write_modular_stats(Writer& w, const ModularGroebnerStats& s) {
   w.Uint64(s.reconstructions);
   w.Key("checking_primes");
   w.Uint64(s.checking_primes);
+  w.Key("random_primes");
+  w.StartArray();
+  for (const std::uint64_t p : s.random_primes) w.Uint64(p);
+  w.EndArray();
   w.Key("rejected_candidates");
   w.Uint64(s.rejected_candidates);
   w.Key("homogenized");

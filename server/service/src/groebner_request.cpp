@@ -95,7 +95,8 @@ void answer_elimination(const GroebnerRequest& request, const std::vector<Polyno
   check_eliminated_names(*request.eliminate, *generators.front().ring());
   EliminationResult result;
   try {
-    result = eliminate_by_method(generators, *request.eliminate, request.method, params, order, &answer.route);
+    result = eliminate_by_method(generators, *request.eliminate, request.method, params, order, &answer.route,
+                                 request.proof);
   } catch (const InputError& e) {
     throw e.field().empty() ? e.in_field(e.code() == "invalid_order" ? order_field(request) : "eliminate") : e;
   }
@@ -125,7 +126,8 @@ GroebnerAnswer answer_groebner_request(const GroebnerRequest& request, Budget bu
   if (eliminating) {
     answer_elimination(request, generators, order, params, answer);
   } else {
-    GroebnerResult result = compute_groebner_basis_by_method(generators, request.method, params, &answer.route);
+    GroebnerResult result =
+        compute_groebner_basis_by_method(generators, request.method, params, &answer.route, request.proof);
     answer.basis = std::move(result.basis);
     answer.stats = result.stats;
     answer.order = order.name();

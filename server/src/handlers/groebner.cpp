@@ -12,6 +12,8 @@ std::string canonical_key(const GroebnerRequest& request) {
   append_key_list(key, request.weights);
   append_key_list(key, request.eliminate);
   append_key_field(key, to_string(request.method));
+  // The default proof is left out, so that the keys of exact requests stay as they were.
+  if (request.proof != GroebnerProof::exact) append_key_field(key, to_string(request.proof));
   return key;
 }
 

@@ -29,12 +29,21 @@
 /// Without the proof (`prove = false`) the reduced basis modulo each prime is still
 /// computed on homogenized generators (faster, measured), taken to h = 1 and reduced
 /// modulo p, and the affine candidate is returned after a consistency check on one
-/// more prime: only for callers that prove what they use by other means
-/// (implicitization verifies its equation by substitution and minimality).
+/// more prime: for callers that prove what they use by other means (implicitization
+/// verifies its equation by substitution and minimality), or, with `random_checks`,
+/// as a labelled unproven answer. Then the candidate, fixed before they are drawn,
+/// must agree with the reduced basis modulo that many primes drawn at random
+/// (random_prime.hpp). A wrong candidate agrees modulo p only when p divides one
+/// nonzero integer N fixed by the ideal and the candidate (a difference of a true and
+/// a lifted coefficient, or the product of the primes where the leading monomials
+/// change, Arnold 2003), so all k checks pass with probability at most
+/// (log2(N)/3.3·10^18)^k: 10^-19 for k = 2 even if N had 10^9 bits. N is not known;
+/// that bound is the whole guarantee (docs/algorithms.md, "The unproven mode").
 
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "implicitizer/groebner/buchberger.hpp"
 #include "implicitizer/groebner/f4.hpp"
@@ -54,6 +63,11 @@ struct ModularGroebnerParams {
   /// Prove the candidate over ℚ (the file comment). false: the affine candidate
   /// after a consistency check on one more prime, for callers that prove it otherwise.
   bool prove = true;
+  /// Without the proof only: the consistency check is made modulo this many primes
+  /// drawn at random (each run in full, every one of them must agree) instead of the
+  /// next prime of the sequence: the labelled unproven answer of the file comment.
+  /// 0: the sequence's next prime(s), for callers that prove the answer themselves.
+  std::size_t random_checks = 0;
   /// With F4: the first prime's run is recorded and replayed on the others, which then
   /// skip the pair criteria, symbolic preprocessing and the rows that reduced to zero
   /// (a prime whose replay leaves the recorded path is run in full; the trace is
@@ -74,10 +88,13 @@ struct ModularGroebnerParams {
 
 /// What the modular computation did.
 struct ModularGroebnerStats {
-  std::size_t primes = 0;               ///< primes whose reduced basis was computed
-  std::size_t lifted_primes = 0;        ///< of which lifted (their leading monomials were the majority's)
-  std::size_t unlucky_primes = 0;       ///< dropped: other leading monomials than the majority's
-  std::size_t checking_primes = 0;      ///< the last batch, computed only to confirm the candidate
+  std::size_t primes = 0;           ///< primes whose reduced basis was computed
+  std::size_t lifted_primes = 0;    ///< of which lifted (their leading monomials were the majority's)
+  std::size_t unlucky_primes = 0;   ///< dropped: other leading monomials than the majority's
+  std::size_t checking_primes = 0;  ///< the last batch, computed only to confirm the candidate
+  /// The random primes the returned candidate was checked on (`random_checks`; empty
+  /// with the proof): the answer's whole guarantee when it is not proven.
+  std::vector<std::uint64_t> random_primes;
   std::size_t bad_primes = 0;           ///< skipped: dividing a leading coefficient of the generators
   std::size_t replayed_primes = 0;      ///< computed by replaying the first prime's F4 trace
   std::size_t replay_failures = 0;      ///< primes whose replay left the trace (then run in full)

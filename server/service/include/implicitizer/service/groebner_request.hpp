@@ -34,6 +34,9 @@ struct GroebnerRequest {
   /// Wall-time limit in seconds; absent or <= 0 means none.
   std::optional<double> timeout_seconds;
   GroebnerMethod method = GroebnerMethod::automatic;
+  /// exact (the default) or random_primes: a modular route's answer not proven, only
+  /// checked modulo random primes, and labelled `proven: false` (groebner_method.hpp).
+  GroebnerProof proof = GroebnerProof::exact;
 };
 
 /// What a Gröbner request computed.
