@@ -57,6 +57,18 @@ TEST(Budget, TimeoutFiresWithLimitTime) {
   limit_message([&] { budget.check_terms(1, "reduction"); }, Limit::time);
 }
 
+// A step predicted to end past the deadline is refused before it starts, with what it
+// would take; one that fits, and any step without a deadline, is let through.
+TEST(Budget, RefusesAStepPredictedPastTheDeadline) {
+  const Budget budget = Budget::with_timeout(60);
+  EXPECT_NO_THROW(budget.refuse_past_deadline(1, "interpolation", "the kernel of 10 columns"));
+  const std::string message = limit_message(
+      [&] { budget.refuse_past_deadline(1e6, "interpolation", "the kernel of 9000 columns"); }, Limit::time);
+  EXPECT_TRUE(contains(message, "during interpolation: the kernel of 9000 columns would take about 1e+06 s"))
+      << message;
+  EXPECT_NO_THROW(Budget().refuse_past_deadline(1e30, "interpolation", "anything"));
+}
+
 // A timeout longer than the clock's range (std::chrono nanoseconds hold ~292 years)
 // must not wrap around into the past and fire at once.
 TEST(Budget, HugeTimeoutNeverFires) {

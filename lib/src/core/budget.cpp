@@ -1,5 +1,6 @@
 #include "implicitizer/core/budget.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <sstream>
 
@@ -126,6 +127,16 @@ void Budget::check_terms(std::size_t terms, const char* where) const {
 double Budget::seconds_left() const {
   if (!has_deadline_) return std::numeric_limits<double>::infinity();
   return std::chrono::duration<double>(deadline_ - Clock::now()).count();
+}
+
+void Budget::refuse_past_deadline(double predicted_seconds, const char* where, const std::string& what) const {
+  const double left = seconds_left();
+  if (predicted_seconds <= left) return;
+  std::ostringstream msg;
+  msg.precision(2);
+  msg << "time limit of " << timeout_seconds_ << " s exceeded during " << where << ": " << what << " would take about "
+      << predicted_seconds << " s and " << std::max(0.0, left) << " s are left";
+  throw LimitExceeded(Limit::time, msg.str());
 }
 
 }  // namespace implicitizer

@@ -203,7 +203,7 @@ class RowReducer {
     return true;
   }
 
-  // The rows this reducer divided by their content.
+  // The divisions of a row by its content this reducer made.
   std::size_t content_divisions() const { return content_divisions_; }
 
  private:

@@ -33,8 +33,8 @@ namespace implicitizer::detail {
 // What the proof found.
 struct ProofOutcome {
   bool proven = false;
-  std::size_t pairs = 0;  // S-pairs checked (those Gebauer–Möller's update leaves)
-  std::size_t content_divisions = 0;  // rows divided by their content (entries outgrew the coefficients)
+  std::size_t pairs = 0;              // S-pairs checked (those Gebauer–Möller's update leaves)
+  std::size_t content_divisions = 0;  // divisions of a row by its content (its entries outgrew the coefficients)
 };
 
 // Whether `basis` (primitive integer polynomials) is a Gröbner basis of an ideal

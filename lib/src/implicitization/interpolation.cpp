@@ -10,7 +10,6 @@
 #include <numeric>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -135,14 +134,9 @@ class InterpolationDriver {
   void refuse_kernel_past_deadline(double columns) const {
     if (ms_per_cubed_column_ <= 0) return;
     const double predicted_seconds = ms_per_cubed_column_ * columns * columns * columns / 1000;
-    const double left = options_.budget.seconds_left();
-    if (predicted_seconds <= left) return;
-    std::ostringstream message;
-    message.precision(2);
-    message << "time limit of " << options_.budget.timeout_seconds()
-            << " s exceeded during interpolation: the kernel of " << static_cast<std::size_t>(columns)
-            << " columns would take about " << predicted_seconds << " s and " << std::max(0.0, left) << " s are left";
-    throw LimitExceeded(Limit::time, message.str());
+    options_.budget.refuse_past_deadline(
+        predicted_seconds, "interpolation",
+        "the kernel of " + std::to_string(static_cast<std::size_t>(columns)) + " columns");
   }
 
   // A prime per thread when a kernel is large enough to pay for starting one. A step

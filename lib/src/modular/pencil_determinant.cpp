@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "implicitizer/core/stopwatch.hpp"
@@ -340,8 +340,7 @@ Polynomial polynomial_of(const CrtLift& crt, const DenseSupport& support, const 
 // fastest of three timings: one that a scheduler tick interrupted would multiply the
 // prediction and refuse what would end in time.
 void refuse_determinants_past_deadline(std::size_t size, std::size_t evaluations, const Budget& budget) {
-  const double left = budget.seconds_left();
-  if (size < 2 * kTimedSize || !std::isfinite(left)) return;
+  if (size < 2 * kTimedSize || !std::isfinite(budget.seconds_left())) return;
   const mp_limb_t p = PrimeSequence().next();
   NmodMatrix sample(kTimedSize, kTimedSize, p);
   double fastest_ms = 0;
@@ -357,13 +356,9 @@ void refuse_determinants_past_deadline(std::size_t size, std::size_t evaluations
   }
   const double scale = static_cast<double>(size) / kTimedSize;
   const double predicted = fastest_ms / 1000 * scale * scale * scale * static_cast<double>(evaluations);
-  if (predicted <= left) return;
-  std::ostringstream message;
-  message.precision(2);
-  message << "time limit of " << budget.timeout_seconds() << " s exceeded during the determinant: " << evaluations
-          << " evaluations of a " << size << "x" << size << " matrix would take about " << predicted << " s and "
-          << std::max(0.0, left) << " s are left";
-  throw LimitExceeded(Limit::time, message.str());
+  budget.refuse_past_deadline(predicted, "the determinant",
+                              std::to_string(evaluations) + " evaluations of a " + std::to_string(size) + "x" +
+                                  std::to_string(size) + " matrix");
 }
 
 Polynomial pencil_determinant(const MatrixPencil& pencil, const RingPtr& ring, const PencilDeterminantParams& options,

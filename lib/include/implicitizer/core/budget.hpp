@@ -102,6 +102,11 @@ class Budget {
 
   /// Seconds left before the deadline (infinity when there is none).
   double seconds_left() const;
+  /// Throws LimitExceeded (time) naming `where` when a step that cannot stop halfway
+  /// (one of FLINT's eliminations), predicted to take `predicted_seconds`, would end
+  /// past the deadline; the message says what `what` ("the kernel of 3000 columns")
+  /// would take and what is left. Nothing without a deadline.
+  void refuse_past_deadline(double predicted_seconds, const char* where, const std::string& what) const;
 
   /// The progress sink every copy of this budget shares: what the long loops last
   /// reported (core/progress.hpp). Never null.

@@ -104,8 +104,9 @@ struct ModularGroebnerStats {
   bool homogenized = false;             ///< the runs modulo p were on homogenized generators
   bool proven = false;                  ///< the answer was proven over ℚ (file comment)
   std::size_t verification_pairs = 0;   ///< S-pairs reduced over ℚ by the proof
-  /// Rows of the proof divided by the gcd of their entries, which had outgrown the
-  /// candidate's coefficients eightfold (docs/algorithms.md, "F4 modulo primes", item 7).
+  /// Divisions of a row of the proof by the gcd of its entries, made when they had
+  /// outgrown the candidate's coefficients eightfold and again at every doubling
+  /// after that (docs/algorithms.md, "F4 modulo primes", item 7).
   std::size_t proof_content_divisions = 0;
   std::size_t threads = 0;     ///< threads used for the primes
   double modular_ms = 0;       ///< wall time of the runs modulo primes
