@@ -6,10 +6,12 @@ reads it), with the split of the route's time from its JSON.
 
     python3 bench/groebner_eliminations.py [--timeout S] [--min-seconds S]
         [--bin build/bin/implicitizer] [--before OTHER/build/bin/implicitizer]
+        [--proofs exact,random_primes]
 
-Ideals that take under --min-seconds with --bin are left out of the table (the
-public surfaces take milliseconds). With --before, each ideal also runs with that
-binary (another commit's build), just before ours. Each run is a whole process; a
+Ideals that take under --min-seconds with --bin (and the first of --proofs) are left
+out of the table (the public surfaces take milliseconds). With --before, each ideal
+also runs with that binary (another commit's build), just before ours. --proofs runs
+each binary once per `--proof` value (random_primes: the labelled unproven mode). Each run is a whole process; a
 run past --timeout prints "> T". Prints a Markdown table (docs/benchmarks.md records
 it with the command).
 """
@@ -23,10 +25,10 @@ import time
 from groebner_auto import ROOT, surface_ideals
 
 
-def eliminate(binary, variables, polys, eliminated, timeout):
+def eliminate(binary, proof, variables, polys, eliminated, timeout):
     """(seconds, the JSON's modular stats) of one run, or (None, None) past the timeout."""
     command = [binary, "groebner", "--vars", ",".join(variables), "--method", "f4", "--eliminate",
-               ",".join(eliminated), "--json", "--timeout", str(timeout)] + polys
+               ",".join(eliminated), "--proof", proof, "--json", "--timeout", str(timeout)] + polys
     start = time.monotonic()
     try:
         done = subprocess.run(command, capture_output=True, text=True, timeout=timeout + 5)
@@ -51,14 +53,18 @@ def main():
     parser.add_argument("--min-seconds", type=float, default=1)
     parser.add_argument("--bin", default=os.path.join(ROOT, "build", "bin", "implicitizer"))
     parser.add_argument("--before", default="")
+    parser.add_argument("--proofs", default="exact")
     args = parser.parse_args()
+    proofs = args.proofs.split(",")
     binaries = ([("before", args.before)] if args.before else []) + [("now", args.bin)]
+    columns = [(label if proof == "exact" else "%s, %s" % (label, proof), binary, proof)
+               for proof in proofs for label, binary in binaries]
     print("| ideal | " + " | ".join("%s: whole run (primes; modulo p + lift + proof)" % label
-                                    for label, _ in binaries) + " |")
-    print("|---" * (1 + len(binaries)) + "|")
+                                    for label, _, _ in columns) + " |")
+    print("|---" * (1 + len(columns)) + "|")
     for name, variables, polys, eliminated in surface_ideals(args.bin):
-        cells = [eliminate(binary, variables, polys, eliminated, args.timeout) for _, binary in binaries]
-        seconds = cells[-1][0]
+        cells = [eliminate(binary, proof, variables, polys, eliminated, args.timeout) for _, binary, proof in columns]
+        seconds = cells[len(binaries) - 1][0]
         if seconds is not None and seconds < args.min_seconds:
             continue
         print("| %s | %s |" % (name, " | ".join(cell(s, m, args.timeout) for s, m in cells)), flush=True)

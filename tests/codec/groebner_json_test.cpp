@@ -57,7 +57,7 @@ TEST(AnswerGroebnerRequest, UnprovenIsLabelled) {
       << json;
   ASSERT_TRUE(a.route.modular);
   EXPECT_EQ(a.route.modular->random_primes.size(), kUnprovenRandomChecks);
-  EXPECT_NE(json.find(R"("random_primes":[)" + std::to_string(a.route.modular->random_primes.front()) + ","),
+  EXPECT_NE(json.find(R"("random_primes":[")" + std::to_string(a.route.modular->random_primes.front()) + R"(",")"),
             std::string::npos)
       << json;
   r.method = GroebnerMethod::buchberger;

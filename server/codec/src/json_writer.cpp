@@ -70,9 +70,11 @@ void write_modular_stats(Writer& w, const ModularGroebnerStats& s) {
   w.Uint64(s.reconstructions);
   w.Key("checking_primes");
   w.Uint64(s.checking_primes);
+  // As decimal strings: the primes pass 2^53, past which a JavaScript client's
+  // numbers round.
   w.Key("random_primes");
   w.StartArray();
-  for (const std::uint64_t p : s.random_primes) w.Uint64(p);
+  for (const std::uint64_t p : s.random_primes) write_string(w, std::to_string(p));
   w.EndArray();
   w.Key("rejected_candidates");
   w.Uint64(s.rejected_candidates);
