@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -330,22 +331,26 @@ Polynomial polynomial_of(const CrtLift& crt, const DenseSupport& support, const 
   return Polynomial::from_terms(ring, Rational(1), std::move(coefficients), std::move(monomials));
 }
 
-}  // namespace
+// A timing of the small determinant is reused for this long: the auxiliary
+// resultant's probes and the determinant that follows them ask within milliseconds
+// of one another, and one timing is three 128 × 128 determinants (its cost is in
+// docs/algorithms.md).
+constexpr double kTimingReuseMs = 1000;
 
-// As interpolation refuses its kernels (docs/algorithms.md, "Kernels that would end
-// past the deadline"): the time is predicted from a determinant of size kTimedSize
-// timed on this run (so under this load), scaled by the cube of the size (FLINT's
-// elimination grows more slowly than that, so the prediction errs high); below
-// 2·kTimedSize one evaluation is short enough for the checks between them. The
-// fastest of three timings: one that a scheduler tick interrupted would multiply the
-// prediction and refuse what would end in time.
-void refuse_determinants_past_deadline(std::size_t size, std::size_t evaluations, const Budget& budget) {
-  if (size < 2 * kTimedSize || !std::isfinite(budget.seconds_left())) return;
+// The fastest of three timings of a kTimedSize determinant, in ms: one that a
+// scheduler tick interrupted would multiply the prediction and refuse what would end
+// in time. Measured on this run (so under this load), at most once per
+// kTimingReuseMs for the whole process.
+double small_determinant_ms() {
+  static std::mutex mutex;
+  static std::optional<Stopwatch> measured_at;
+  static double fastest_ms = 0;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (measured_at && measured_at->elapsed_ms() < kTimingReuseMs) return fastest_ms;
   const mp_limb_t p = PrimeSequence().next();
   NmodMatrix sample(kTimedSize, kTimedSize, p);
-  double fastest_ms = 0;
   for (int run = 0; run < 3; ++run) {
-    ResidueStream stream(size + static_cast<std::size_t>(run));
+    ResidueStream stream(static_cast<std::uint64_t>(run));
     for (std::size_t r = 0; r < kTimedSize; ++r) {
       for (std::size_t c = 0; c < kTimedSize; ++c) nmod_mat_entry(sample.get(), r, c) = stream.next(p);
     }
@@ -354,8 +359,21 @@ void refuse_determinants_past_deadline(std::size_t size, std::size_t evaluations
     const double ms = timer.elapsed_ms();
     fastest_ms = run == 0 ? ms : std::min(fastest_ms, ms);
   }
+  measured_at.emplace();
+  return fastest_ms;
+}
+
+}  // namespace
+
+// As interpolation refuses its kernels (docs/algorithms.md, "Kernels that would end
+// past the deadline"): the time is predicted from a determinant of size kTimedSize
+// (small_determinant_ms), scaled by the cube of the size (FLINT's elimination grows
+// more slowly than that, so the prediction errs high); below 2·kTimedSize one
+// evaluation is short enough for the checks between them.
+void refuse_determinants_past_deadline(std::size_t size, std::size_t evaluations, const Budget& budget) {
+  if (size < 2 * kTimedSize || !std::isfinite(budget.seconds_left())) return;
   const double scale = static_cast<double>(size) / kTimedSize;
-  const double predicted = fastest_ms / 1000 * scale * scale * scale * static_cast<double>(evaluations);
+  const double predicted = small_determinant_ms() / 1000 * scale * scale * scale * static_cast<double>(evaluations);
   budget.refuse_past_deadline(predicted, "the determinant",
                               std::to_string(evaluations) + " evaluations of a " + std::to_string(size) + "x" +
                                   std::to_string(size) + " matrix");
