@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
 
 #include "growing_basis.hpp"
 #include "implicitizer/modular/one_per_thread.hpp"
+#include "limb_row.hpp"
 #include "macaulay_rows.hpp"
 #include "s_pair_queue.hpp"
 
@@ -30,6 +33,11 @@ constexpr std::size_t kContentGrowth = 8;
 // Reduction steps of one row between two budget checks (time, memory, cancellation;
 // the work allowance is charged at every step).
 constexpr std::size_t kStepsBetweenChecks = 64;
+
+// The candidates whose largest coefficient has at most this many bits are checked in
+// fixed-width rows (LimbRow), the others in GMP integers (MpzRow): docs/algorithms.md,
+// "F4 modulo primes", item 7, has the measurements behind the threshold.
+constexpr std::size_t kLimbRowCoefficientBits = 1024;
 
 // The S-pairs of `basis` that Gebauer–Möller's update (and the product criterion)
 // leave, as the Buchberger engine would reduce them on a candidate whose every
@@ -122,21 +130,78 @@ ProofMatrix build_proof_matrix(const Ring& ring, const std::vector<IntPolynomial
   return matrix;
 }
 
+// The bits of a nonzero integer: |x| < 2^bits(x).
+double bits(mpz_srcptr x) { return static_cast<double>(mpz_sizeinbase(x, 2)); }
+
+// An upper bound on log2(2^a + 2^b): the size of a sum from those of its terms. The
+// margin covers the rounding of the two floating-point operations.
+double log2_sum(double a, double b) {
+  const double high = std::max(a, b);
+  return high + std::log2(1.0 + std::exp2(std::min(a, b) - high)) + 1e-9;
+}
+
+// The accumulator for a candidate with large coefficients: one GMP integer per
+// column, each as long as its own value. LimbRow gives every entry of a row the width
+// of the longest, which gains nothing once the entries run to thousands of bits and
+// differ in size, and takes more memory (kLimbRowCoefficientBits). An mpz keeps its
+// limbs when it is cleared, so a column reused costs no allocation.
+class MpzRow {
+ public:
+  // How add_multiple takes the multiplied polynomials' coefficients.
+  using Coefficients = std::vector<IntPolynomial>;
+
+  void reserve_columns(std::size_t columns) {
+    if (entries_.size() < columns) entries_.resize(columns);
+  }
+  std::size_t capacity_bits() const { return std::numeric_limits<std::size_t>::max(); }
+  void ensure_bits(std::size_t) {}
+  void reset_width(std::size_t) {}
+  bool written(std::size_t c) const { return mpz_sgn(entries_[c].get_mpz_t()) != 0; }
+  bool is_zero(std::size_t c) const { return !written(c); }
+  void get(std::size_t c, mpz_ptr out) const { mpz_set(out, entries_[c].get_mpz_t()); }
+  void set(std::size_t c, mpz_srcptr v) { mpz_set(entries_[c].get_mpz_t(), v); }
+  void clear(std::size_t c) { mpz_set_ui(entries_[c].get_mpz_t(), 0); }
+  void add_product(std::size_t c, mpz_srcptr f, mpz_srcptr m) { mpz_addmul(entries_[c].get_mpz_t(), f, m); }
+  void add_multiple(const std::uint32_t* columns, std::size_t count, std::size_t from, mpz_srcptr f,
+                    const std::vector<IntPolynomial>& polynomials, std::size_t i) {
+    const std::vector<Integer>& values = polynomials[i].coefficients;
+    for (std::size_t t = from; t < count; ++t) add_product(columns[t], f, values[t].get_mpz_t());
+  }
+  void multiply(std::size_t c, mpz_srcptr s) { mpz_mul(entries_[c].get_mpz_t(), entries_[c].get_mpz_t(), s); }
+  std::size_t max_bits(std::size_t from, std::size_t to) const {
+    std::size_t bits = 0;
+    for (std::size_t c = from; c <= to && c < entries_.size(); ++c) {
+      if (written(c)) bits = std::max(bits, mpz_sizeinbase(entries_[c].get_mpz_t(), 2));
+    }
+    return bits;
+  }
+
+ private:
+  std::vector<Integer> entries_;
+};
+
 // Fraction-free elimination of one row over ℤ against a degree's pivots, in a dense
-// accumulator that is all zero before and, when the row reduces to zero, after.
-// GMP integers rather than FLINT's: the entries are multi-limb after the first
-// scaling, and an mpz keeps its limbs when it is cleared, where an fmpz returns them
-// and takes them back at the next update.
+// accumulator `Row` (LimbRow or MpzRow) that is all zero before and, when the row
+// reduces to zero, after. A LimbRow's entries have one width: the reducer keeps an
+// upper bound on their size, from the sizes of what each step multiplies, and
+// measures the entries only when that bound would pass the width (the bound is
+// pessimistic: a step's multiple mostly cancels what it adds to), widening the row
+// only when the measured size needs it. An MpzRow has no width to keep.
+template <class Row>
 class RowReducer {
  public:
-  // `coefficient_bits`: the bits of the basis's largest coefficient.
-  RowReducer(const std::vector<IntPolynomial>& basis, std::size_t coefficient_bits, const Budget& budget)
-      : basis_(basis), content_bits_(kContentGrowth * coefficient_bits + 64), budget_(budget) {}
+  // `coefficients`: the basis's, as `Row` takes them; `poly_bits`: the bits of each
+  // basis element's largest coefficient; `coefficient_bits`: of the basis's largest.
+  RowReducer(const std::vector<IntPolynomial>& basis, const typename Row::Coefficients& coefficients,
+             const std::vector<double>& poly_bits, std::size_t coefficient_bits, const Budget& budget)
+      : basis_(basis),
+        coefficients_(coefficients),
+        poly_bits_(poly_bits),
+        content_bits_(kContentGrowth * coefficient_bits + 64),
+        budget_(budget) {}
 
   // Sizes the accumulator for a matrix of `columns` columns.
-  void resize(std::size_t columns) {
-    if (row_.size() < columns) row_.resize(columns);
-  }
+  void resize(std::size_t columns) { row_.reserve_columns(columns); }
 
   // fa·row_a − ga·row_b with fa, ga making the leading terms cancel: the
   // S-polynomial of a pair (both rows lead the same column).
@@ -146,8 +211,10 @@ class RowReducer {
     mpz_gcd(gcd_.get_mpz_t(), lc_a, lc_b);
     mpz_divexact(scale_.get_mpz_t(), lc_b, gcd_.get_mpz_t());
     mpz_divexact(factor_.get_mpz_t(), lc_a, gcd_.get_mpz_t());
-    add_multiple(a, scale_.get_mpz_t(), 1);
     mpz_neg(factor_.get_mpz_t(), factor_.get_mpz_t());
+    bound_ = log2_sum(bits(scale_.get_mpz_t()) + poly_bits_[a.poly], bits(factor_.get_mpz_t()) + poly_bits_[b.poly]);
+    row_.reset_width(static_cast<std::size_t>(std::ceil(bound_)));
+    add_multiple(a, scale_.get_mpz_t(), 1);
     add_multiple(b, factor_.get_mpz_t(), 1);
     first_ = a.columns.front() + 1;
     last_ = std::max(a.columns.back(), b.columns.back());
@@ -155,7 +222,11 @@ class RowReducer {
 
   // A generator's coefficients at its columns.
   void load_generator(const IntPolynomial& h, const std::vector<std::uint32_t>& columns) {
-    for (std::size_t t = 0; t < columns.size(); ++t) row_[columns[t]] = h.coefficients[t];
+    std::size_t most = 0;
+    for (const Integer& c : h.coefficients) most = std::max(most, mpz_sizeinbase(c.get_mpz_t(), 2));
+    bound_ = static_cast<double>(most);
+    row_.reset_width(most);
+    for (std::size_t t = 0; t < columns.size(); ++t) row_.set(columns[t], h.coefficients[t].get_mpz_t());
     first_ = *std::min_element(columns.begin(), columns.end());
     last_ = *std::max_element(columns.begin(), columns.end());
   }
@@ -165,9 +236,9 @@ class RowReducer {
   bool reduces_to_zero(const ProofMatrix& matrix) {
     std::size_t steps = 0;
     std::size_t content_bits = content_bits_;
+    const mpz_ptr lead = lead_.get_mpz_t();
     for (std::size_t c = first_; c <= last_; ++c) {
-      const mpz_ptr lead = row_[c].get_mpz_t();
-      if (mpz_sgn(lead) == 0) continue;
+      if (row_.is_zero(c)) continue;
       const std::int64_t p = matrix.pivot_of[c];
       if (p < 0) {
         clear(c);
@@ -175,22 +246,31 @@ class RowReducer {
       }
       const ProofRow& pivot = matrix.rows[static_cast<std::size_t>(p)];
       const mpz_srcptr lc = basis_[pivot.poly].coefficients.front().get_mpz_t();
+      row_.get(c, lead);
+      row_.clear(c);
       // row ← (lc/d)·row − (lead/d)·pivot, d = gcd(lead, lc).
       mpz_gcd(gcd_.get_mpz_t(), lead, lc);
       mpz_divexact(scale_.get_mpz_t(), lc, gcd_.get_mpz_t());
       mpz_divexact(factor_.get_mpz_t(), lead, gcd_.get_mpz_t());
-      mpz_set_ui(lead, 0);
-      std::uint64_t work = kWorkPerStep + kWorkPerTerm * pivot.columns.size();
+      mpz_neg(factor_.get_mpz_t(), factor_.get_mpz_t());
       const bool scaled = mpz_cmp_ui(scale_.get_mpz_t(), 1) != 0;
+      const double scale_bits = scaled ? bits(scale_.get_mpz_t()) : 0.0;
+      const double added_bits = bits(factor_.get_mpz_t()) + poly_bits_[pivot.poly];
+      double bound = log2_sum(bound_ + scale_bits, added_bits);
+      if (bound > static_cast<double>(row_.capacity_bits())) {
+        bound_ = static_cast<double>(row_.max_bits(c + 1, last_));
+        bound = log2_sum(bound_ + scale_bits, added_bits);
+        row_.ensure_bits(static_cast<std::size_t>(std::ceil(bound)));
+      }
+      std::uint64_t work = kWorkPerStep + kWorkPerTerm * pivot.columns.size();
       if (scaled) {
         for (std::size_t k = c + 1; k <= last_; ++k) {
-          const mpz_ptr entry = row_[k].get_mpz_t();
-          if (mpz_sgn(entry) != 0) mpz_mul(entry, entry, scale_.get_mpz_t());
+          if (row_.written(k)) row_.multiply(k, scale_.get_mpz_t());
         }
         work += kWorkPerTerm * (last_ - c);
       }
-      mpz_neg(factor_.get_mpz_t(), factor_.get_mpz_t());
       add_multiple(pivot, factor_.get_mpz_t(), 1);
+      bound_ = bound;
       last_ = std::max<std::size_t>(last_, pivot.columns.back());
       budget_.charge_work(work, kWhere);
       if (scaled && mpz_sizeinbase(factor_.get_mpz_t(), 2) > content_bits) {
@@ -209,37 +289,43 @@ class RowReducer {
  private:
   // row += factor·(the pivot row's coefficients), from term `from` on.
   void add_multiple(const ProofRow& r, mpz_srcptr factor, std::size_t from) {
-    const std::vector<Integer>& values = basis_[r.poly].coefficients;
-    for (std::size_t t = from; t < r.columns.size(); ++t) {
-      mpz_addmul(row_[r.columns[t]].get_mpz_t(), factor, values[t].get_mpz_t());
-    }
+    row_.add_multiple(r.columns.data(), r.columns.size(), from, factor, coefficients_, r.poly);
   }
 
   void remove_content(std::size_t from) {
     const mpz_ptr g = gcd_.get_mpz_t();
+    const mpz_ptr entry = lead_.get_mpz_t();
     mpz_set_ui(g, 0);
     for (std::size_t k = from; k <= last_ && mpz_cmp_ui(g, 1) != 0; ++k) {
-      if (mpz_sgn(row_[k].get_mpz_t()) != 0) mpz_gcd(g, g, row_[k].get_mpz_t());
+      if (!row_.written(k)) continue;
+      row_.get(k, entry);
+      mpz_gcd(g, g, entry);
     }
     if (mpz_cmp_ui(g, 1) <= 0) return;
     for (std::size_t k = from; k <= last_; ++k) {
-      const mpz_ptr entry = row_[k].get_mpz_t();
-      if (mpz_sgn(entry) != 0) mpz_divexact(entry, entry, g);
+      if (!row_.written(k)) continue;
+      row_.get(k, entry);
+      mpz_divexact(entry, entry, g);
+      row_.set(k, entry);
     }
+    bound_ = static_cast<double>(row_.max_bits(from, last_));
   }
 
   // Zeroes the accumulator from column `from` on (a refuted row leaves entries).
   void clear(std::size_t from) {
-    for (std::size_t k = from; k <= last_; ++k) mpz_set_ui(row_[k].get_mpz_t(), 0);
+    for (std::size_t k = from; k <= last_; ++k) row_.clear(k);
   }
 
   const std::vector<IntPolynomial>& basis_;
+  const typename Row::Coefficients& coefficients_;
+  const std::vector<double>& poly_bits_;
   std::size_t content_bits_;  // the entries' bits above which the content is first divided out
   const Budget& budget_;
-  std::vector<Integer> row_;
+  Row row_;
+  double bound_ = 0;  // log2 of an upper bound on the entries' magnitudes
   std::size_t first_ = 0, last_ = 0;
   std::size_t content_divisions_ = 0;
-  Integer gcd_, scale_, factor_;
+  Integer gcd_, scale_, factor_, lead_;
 };
 
 // The checks grouped by degree, the degrees in increasing order and the checks
@@ -309,44 +395,37 @@ class DegreeSchedule {
   Builder build_;
 };
 
-std::size_t largest_coefficient_bits(const std::vector<IntPolynomial>& basis) {
-  std::size_t bits = 0;
-  for (const auto& g : basis) {
-    for (const auto& c : g.coefficients) bits = std::max(bits, mpz_sizeinbase(c.get_mpz_t(), 2));
+// The bits of each element's largest coefficient.
+std::vector<double> coefficient_bits_by_element(const std::vector<IntPolynomial>& basis) {
+  std::vector<double> bits(basis.size(), 0.0);
+  for (std::size_t i = 0; i < basis.size(); ++i) {
+    for (const auto& c : basis[i].coefficients) {
+      bits[i] = std::max(bits[i], static_cast<double>(mpz_sizeinbase(c.get_mpz_t(), 2)));
+    }
   }
   return bits;
 }
 
-}  // namespace
+// What the threads' checks found.
+struct ChecksRun {
+  bool refuted = false;
+  std::size_t content_divisions = 0;
+};
 
-ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynomial>& generators,
-                                  const std::vector<IntPolynomial>& basis, const BuchbergerParams& params,
-                                  std::size_t threads) {
-  const Budget& budget = params.budget;
-  const std::vector<SPair> pairs = criterion_pairs(ring, basis, params);
-  std::vector<BasicReducer<IntPolynomial>> reducers;
-  for (const auto& g : basis) reducers.push_back({&g, ring.divisor_mask(g.monomials.data()), 0});
-
-  // The checks of one degree (of their leading monomial) share a matrix.
-  std::map<std::int32_t, std::vector<Check>> by_degree;
-  for (std::size_t i = 0; i < generators.size(); ++i) {
-    if (!generators[i].empty()) by_degree[ring.total_degree(generators[i].monomials.data())].push_back({false, i, 0});
-  }
-  for (const SPair& pair : pairs) by_degree[pair.lcm_degree].push_back({true, pair.i, pair.j});
-  DegreeSchedule schedule(by_degree, [&](const std::vector<Check>& checks) {
-    return build_proof_matrix(ring, generators, basis, reducers, checks, budget);
-  });
-
-  ProofOutcome outcome;
-  outcome.pairs = pairs.size();
+// Runs every check of `schedule` on `workers` threads, each with its own accumulator
+// row; the first refutation stops them all.
+template <class Row>
+ChecksRun run_checks(DegreeSchedule& schedule, const std::vector<IntPolynomial>& generators,
+                     const std::vector<IntPolynomial>& basis, const typename Row::Coefficients& coefficients,
+                     const std::vector<double>& poly_bits, std::size_t coefficient_bits, const Budget& budget,
+                     std::size_t workers) {
   std::atomic<bool> stop = false, refuted = false;
   std::atomic<std::size_t> next = 0;
-  const std::size_t workers = std::min(std::max<std::size_t>(threads, 1), schedule.total());
-  const std::size_t coefficient_bits = largest_coefficient_bits(basis);
-  std::vector<RowReducer> reducers_per_thread;
-  for (std::size_t t = 0; t < workers; ++t) reducers_per_thread.emplace_back(basis, coefficient_bits, budget);
+  std::vector<RowReducer<Row>> reducers_per_thread;
+  for (std::size_t t = 0; t < workers; ++t)
+    reducers_per_thread.emplace_back(basis, coefficients, poly_bits, coefficient_bits, budget);
   run_one_per_thread(workers, [&](std::size_t t) {
-    RowReducer& reducer = reducers_per_thread[t];
+    RowReducer<Row>& reducer = reducers_per_thread[t];
     std::size_t g = 0;
     try {
       for (std::size_t k; !stop.load(std::memory_order_relaxed) && (k = next.fetch_add(1)) < schedule.total();) {
@@ -373,8 +452,46 @@ ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynom
       throw;
     }
   });
-  for (const RowReducer& reducer : reducers_per_thread) outcome.content_divisions += reducer.content_divisions();
-  outcome.proven = !refuted;
+  ChecksRun run;
+  run.refuted = refuted;
+  for (const RowReducer<Row>& reducer : reducers_per_thread) run.content_divisions += reducer.content_divisions();
+  return run;
+}
+
+}  // namespace
+
+ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynomial>& generators,
+                                  const std::vector<IntPolynomial>& basis, const BuchbergerParams& params,
+                                  std::size_t threads, ProofRows rows) {
+  const Budget& budget = params.budget;
+  const std::vector<SPair> pairs = criterion_pairs(ring, basis, params);
+  std::vector<BasicReducer<IntPolynomial>> reducers;
+  for (const auto& g : basis) reducers.push_back({&g, ring.divisor_mask(g.monomials.data()), 0});
+
+  // The checks of one degree (of their leading monomial) share a matrix.
+  std::map<std::int32_t, std::vector<Check>> by_degree;
+  for (std::size_t i = 0; i < generators.size(); ++i) {
+    if (!generators[i].empty()) by_degree[ring.total_degree(generators[i].monomials.data())].push_back({false, i, 0});
+  }
+  for (const SPair& pair : pairs) by_degree[pair.lcm_degree].push_back({true, pair.i, pair.j});
+  DegreeSchedule schedule(by_degree, [&](const std::vector<Check>& checks) {
+    return build_proof_matrix(ring, generators, basis, reducers, checks, budget);
+  });
+
+  ProofOutcome outcome;
+  outcome.pairs = pairs.size();
+  const std::size_t workers = std::min(std::max<std::size_t>(threads, 1), schedule.total());
+  const std::vector<double> poly_bits = coefficient_bits_by_element(basis);
+  const auto coefficient_bits =
+      static_cast<std::size_t>(poly_bits.empty() ? 0.0 : *std::max_element(poly_bits.begin(), poly_bits.end()));
+  const bool limbs = rows == ProofRows::limbs ||
+                     (rows == ProofRows::by_coefficient_size && coefficient_bits <= kLimbRowCoefficientBits);
+  const ChecksRun run =
+      limbs ? run_checks<LimbRow>(schedule, generators, basis, PackedCoefficients(basis), poly_bits, coefficient_bits,
+                                  budget, workers)
+            : run_checks<MpzRow>(schedule, generators, basis, basis, poly_bits, coefficient_bits, budget, workers);
+  outcome.content_divisions = run.content_divisions;
+  outcome.proven = !run.refuted;
   return outcome;
 }
 

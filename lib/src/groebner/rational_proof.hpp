@@ -37,12 +37,18 @@ struct ProofOutcome {
   std::size_t content_divisions = 0;  // divisions of a row by its content (its entries outgrew the coefficients)
 };
 
+// The accumulator rows reduce in: fixed-width limbs (limb_row.hpp) or one GMP
+// integer per entry. by_coefficient_size takes the limbs for candidates with small
+// coefficients, where they are faster, and GMP for large ones (rational_proof.cpp,
+// kLimbRowCoefficientBits); the others are for tests of each.
+enum class ProofRows { by_coefficient_size, limbs, gmp };
+
 // Whether `basis` (primitive integer polynomials) is a Gröbner basis of an ideal
 // containing `generators`, checked exactly; the checks are shared among `threads`
 // threads and the first that fails stops them all. Budget stops name "the proof
 // over Q".
 ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynomial>& generators,
                                   const std::vector<IntPolynomial>& basis, const BuchbergerParams& params,
-                                  std::size_t threads);
+                                  std::size_t threads, ProofRows rows = ProofRows::by_coefficient_size);
 
 }  // namespace implicitizer::detail
