@@ -185,6 +185,8 @@ TEST(CrtLift, RejectsMisuse) {
   CrtLift lift(2);
   const std::vector<mp_limb_t> one = {1};
   EXPECT_THROW(lift.add(one, 101), std::invalid_argument);
+  const std::vector<mp_limb_t> two = {1, 2};
+  EXPECT_THROW(lift.add(two, (mp_limb_t{1} << 63) + 29), std::invalid_argument);  // a prime past 2^63
   const std::vector<std::size_t> decreasing = {1, 0};
   EXPECT_THROW(lift.spread(decreasing, 3), std::invalid_argument);
 }

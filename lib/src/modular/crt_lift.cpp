@@ -21,29 +21,33 @@ std::size_t CrtLift::modulus_bits() const { return fmpz_bits(modulus_.get()); }
 
 bool CrtLift::add(std::span<const mp_limb_t> residues, mp_limb_t p) {
   if (residues.size() != residues_.size()) throw std::invalid_argument("CrtLift::add: one residue per entry expected");
+  if (p >> 63 != 0) throw std::invalid_argument("CrtLift::add: the prime must be below 2^63");
   check_values(residues, p);
   bool changed = false;
-  // What fmpz_CRT_ui computes on every call and depends only on the moduli: the
-  // inverse of the old modulus modulo p, p's precomputed inverse and the product.
-  Fmpz product;
-  mp_limb_t inverse = 0, p_inverse = 0;
-  if (primes_ > 0) {
-    inverse = n_invmod(fmpz_fdiv_ui(modulus_.get(), p), p);
-    p_inverse = n_preinvert_limb(p);
-    fmpz_mul_ui(product.get(), modulus_.get(), p);
-  }
-  for (std::size_t i = 0; i < residues_.size(); ++i) {
-    // The CRT wants a first modulus above 1: the first prime sets the residue.
-    if (primes_ == 0) {
-      fmpz_set_ui(scratch_.get(), residues[i]);
-      if (residues[i] > p / 2) fmpz_sub_ui(scratch_.get(), scratch_.get(), p);
-    } else {
-      _fmpz_CRT_ui_precomp(scratch_.get(), residues_[i].get(), modulus_.get(), residues[i], p, p_inverse, product.get(),
-                           inverse, /*sign=*/1);
+  if (primes_ == 0) {
+    // The first prime sets the residue, symmetric.
+    for (std::size_t i = 0; i < residues_.size(); ++i) {
+      fmpz_set_ui(residues_[i].get(), residues[i]);
+      if (residues[i] > p / 2) fmpz_sub_ui(residues_[i].get(), residues_[i].get(), p);
+      changed = changed || residues[i] != 0;
     }
-    if (!fmpz_equal(scratch_.get(), residues_[i].get())) {
+  } else {
+    // In place, entry by entry: x ← x + M·((r − x)·M⁻¹ mod p), then into (−Mp/2,
+    // Mp/2]. What FLINT's _fmpz_CRT_ui_precomp computes, without the temporary it
+    // copies each entry into. The entry changes exactly when the multiple of M is not
+    // zero; Mp is odd, so no entry sits on Mp/2.
+    const mp_limb_t inverse = n_invmod(fmpz_fdiv_ui(modulus_.get(), p), p);
+    const mp_limb_t inverse_quotient = n_mulmod_precomp_shoup(inverse, p);
+    Fmpz product, half;
+    fmpz_mul_ui(product.get(), modulus_.get(), p);
+    fmpz_fdiv_q_2exp(half.get(), product.get(), 1);
+    for (std::size_t i = 0; i < residues_.size(); ++i) {
+      fmpz* x = residues_[i].get();
+      const mp_limb_t difference = n_submod(residues[i], fmpz_fdiv_ui(x, p), p);
+      if (difference == 0) continue;
       changed = true;
-      fmpz_swap(scratch_.get(), residues_[i].get());
+      fmpz_addmul_ui(x, modulus_.get(), n_mulmod_shoup(inverse, difference, inverse_quotient, p));
+      if (fmpz_cmp(x, half.get()) > 0) fmpz_sub(x, x, product.get());
     }
   }
   fmpz_mul_ui(modulus_.get(), modulus_.get(), p);
@@ -59,8 +63,9 @@ void CrtLift::check_values(std::span<const mp_limb_t> residues, mp_limb_t p) {
   for (std::size_t i = 0; i < residues_.size(); ++i) {
     if (!known_[i]) continue;
     const fmpq* v = values_[i].get();
+    // n ≡ r·d rather than n·d⁻¹ ≡ r: the same test for d ≢ 0, without an inverse.
     const mp_limb_t den = fmpz_fdiv_ui(fmpq_denref(v), p);
-    const bool agrees = den != 0 && nmod_mul(fmpz_fdiv_ui(fmpq_numref(v), p), n_invmod(den, p), mod) == residues[i];
+    const bool agrees = den != 0 && fmpz_fdiv_ui(fmpq_numref(v), p) == nmod_mul(residues[i], den, mod);
     if (agrees && !confirmed_[i]) {
       confirmed_[i] = 1;
       fmpz_lcm(denominator_.get(), denominator_.get(), fmpq_denref(v));

@@ -65,10 +65,11 @@ class CrtLift {
   /// The bits of M.
   std::size_t modulus_bits() const;
 
-  /// Adds the image modulo `p`, a prime not added before: residues[i] ∈ [0, p) is
+  /// Adds the image modulo `p`, a prime below 2^63 not added before (the update uses
+  /// Shoup's multiplication, which needs the top bit clear): residues[i] ∈ [0, p) is
   /// entry i modulo p. Drops the rational values p refutes. Returns whether any
   /// entry's integer (integer()) changed: false means every integer agrees with p.
-  /// Throws std::invalid_argument when the sizes differ.
+  /// Throws std::invalid_argument when the sizes differ or p ≥ 2^63.
   bool add(std::span<const mp_limb_t> residues, mp_limb_t p);
 
   /// Grows to `new_size` entries: entry i moves to positions[i] (increasing, below
