@@ -137,6 +137,27 @@ TEST(LimbRowTest, WideningKeepsSignsAndValues) {
   EXPECT_EQ(row.max_bits(0, 4), 62u);
 }
 
+// A row cleared to zero can take any width, narrower too, and computes as before.
+TEST(LimbRowTest, AZeroRowChangesWidthFreely) {
+  LimbRow row;
+  row.reserve_columns(4);
+  row.ensure_bits(2000);
+  const mpz_class big = -(mpz_class(3) << 1900);
+  row.set(1, big.get_mpz_t());
+  row.set(3, big.get_mpz_t());
+  EXPECT_EQ(entry(row, 3), big);
+  row.clear(1);
+  row.clear(3);
+  row.reset_width(60);
+  EXPECT_LT(row.capacity_bits(), 200u);
+  for (std::size_t c = 0; c < 4; ++c) EXPECT_TRUE(row.is_zero(c)) << "column " << c;
+  const mpz_class f = -12345, m = 678;
+  row.add_product(2, f.get_mpz_t(), m.get_mpz_t());
+  EXPECT_EQ(entry(row, 2), f * m);
+  EXPECT_TRUE(row.is_zero(1));
+  EXPECT_TRUE(row.is_zero(3));
+}
+
 TEST(LimbRowTest, CancellationToZeroIsSeen) {
   LimbRow row;
   row.reserve_columns(1);

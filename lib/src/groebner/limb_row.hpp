@@ -10,9 +10,9 @@
 // for a whole pivot row, a few limbs, and c mostly one limb. mpz_addmul pays for
 // signs, normalisation and a possible reallocation at every call, which at these
 // sizes costs more than the multiplication itself; GMP's mpn_addmul_1 into a
-// fixed-width entry does only the multiplication. Past a few thousand bits the
-// entries of one row differ too much in size for one width, and mpz wins again
-// (docs/algorithms.md, "F4 modulo primes", item 7, has the measurements).
+// fixed-width entry does only the multiplication. With entries of thousands of bits
+// that differ in size within a row, one width gains nothing over mpz and takes more
+// memory (docs/algorithms.md, "F4 modulo primes", item 7, has the measurements).
 
 #include <gmp.h>
 
