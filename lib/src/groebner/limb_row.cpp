@@ -17,6 +17,17 @@ std::size_t magnitude_bits(const mp_limb_t* p, std::size_t n) {
   return n == 0 ? 0 : 64 * (n - 1) + static_cast<std::size_t>(std::bit_width(p[n - 1]));
 }
 
+// Carries (or borrows) `carry` into the `rest` limbs at `at`, modulo their width:
+// the tail of every multiply-and-add into an entry.
+void carry_into(mp_limb_t* at, mp_size_t rest, mp_limb_t carry, bool subtract) {
+  if (carry == 0 || rest <= 0) return;
+  if (subtract) {
+    mpn_sub_1(at, at, rest, carry);
+  } else {
+    mpn_add_1(at, at, rest, carry);
+  }
+}
+
 }  // namespace
 
 PackedCoefficients::PackedCoefficients(const std::vector<IntPolynomial>& polynomials) {
@@ -105,13 +116,7 @@ void LimbRow::add_magnitude(mp_limb_t* e, const mp_limb_t* p, std::size_t n, boo
   const auto w = static_cast<mp_size_t>(width_);
   const auto k = static_cast<mp_size_t>(n);
   const mp_limb_t carry = subtract ? mpn_sub_n(e, e, p, k) : mpn_add_n(e, e, p, k);
-  if (carry != 0 && k < w) {
-    if (subtract) {
-      mpn_sub_1(e + k, e + k, w - k, carry);
-    } else {
-      mpn_add_1(e + k, e + k, w - k, carry);
-    }
-  }
+  carry_into(e + k, w - k, carry, subtract);
 }
 
 void LimbRow::add_span(std::size_t c, LimbSpan f, LimbSpan m) {
@@ -134,14 +139,7 @@ void LimbRow::add_span(std::size_t c, LimbSpan f, LimbSpan m) {
       mp_limb_t* at = e + j;
       const auto k = static_cast<mp_size_t>(n);
       const mp_limb_t carry = subtract ? mpn_submul_1(at, fp, k, mp[j]) : mpn_addmul_1(at, fp, k, mp[j]);
-      const auto rest = static_cast<mp_size_t>(width_ - j - n);
-      if (carry != 0 && rest > 0) {
-        if (subtract) {
-          mpn_sub_1(at + k, at + k, rest, carry);
-        } else {
-          mpn_add_1(at + k, at + k, rest, carry);
-        }
-      }
+      carry_into(at + k, static_cast<mp_size_t>(width_ - j - n), carry, subtract);
     }
     return;
   }
@@ -174,13 +172,10 @@ void LimbRow::add_multiple(const std::uint32_t* columns, std::size_t count, std:
     // The usual case, as add_span does it, without the call and the size tests.
     mp_limb_t* e = entry(columns[t]);
     nonzero_[columns[t]] = 1;
-    if (factor.negative() != (term.signed_size < 0)) {
-      const mp_limb_t borrow = mpn_submul_1(e, factor.limbs, n, term.limb_or_offset);
-      if (borrow != 0 && rest > 0) mpn_sub_1(e + n, e + n, rest, borrow);
-    } else {
-      const mp_limb_t carry = mpn_addmul_1(e, factor.limbs, n, term.limb_or_offset);
-      if (carry != 0 && rest > 0) mpn_add_1(e + n, e + n, rest, carry);
-    }
+    const bool subtract = factor.negative() != (term.signed_size < 0);
+    const mp_limb_t carry = subtract ? mpn_submul_1(e, factor.limbs, n, term.limb_or_offset)
+                                     : mpn_addmul_1(e, factor.limbs, n, term.limb_or_offset);
+    carry_into(e + n, rest, carry, subtract);
   }
 }
 

@@ -34,11 +34,6 @@ constexpr std::size_t kContentGrowth = 8;
 // the work allowance is charged at every step).
 constexpr std::size_t kStepsBetweenChecks = 64;
 
-// The candidates whose largest coefficient has at most this many bits are checked in
-// fixed-width rows (LimbRow), the others in GMP integers (MpzRow): docs/algorithms.md,
-// "F4 modulo primes", item 7, has the measurements behind the threshold.
-constexpr std::size_t kLimbRowCoefficientBits = 1024;
-
 // The S-pairs of `basis` that Gebauer–Möller's update (and the product criterion)
 // leave, as the Buchberger engine would reduce them on a candidate whose every
 // S-polynomial reduces to zero: then no element is added, so these are all its pairs.

@@ -38,10 +38,12 @@ struct ProofOutcome {
 };
 
 // The accumulator rows reduce in: fixed-width limbs (limb_row.hpp) or one GMP
-// integer per entry. by_coefficient_size takes the limbs for candidates with small
-// coefficients, where they are faster, and GMP for large ones (rational_proof.cpp,
-// kLimbRowCoefficientBits); the others are for tests of each.
+// integer per entry. by_coefficient_size takes the limbs for candidates whose largest
+// coefficient has at most kLimbRowCoefficientBits bits, where they are faster, and
+// GMP for larger ones (docs/algorithms.md, "F4 modulo primes", item 7, has the
+// measurements behind the threshold); the others are for tests of each.
 enum class ProofRows { by_coefficient_size, limbs, gmp };
+inline constexpr std::size_t kLimbRowCoefficientBits = 1024;
 
 // Whether `basis` (primitive integer polynomials) is a Gröbner basis of an ideal
 // containing `generators`, checked exactly; the checks are shared among `threads`
