@@ -15,8 +15,10 @@ namespace detail {
 
 F4Outcome run_modular_algorithm(const Ring& ring, const ModularArithmetic& arithmetic,
                                 std::vector<ModPolynomial> generators, ModularAlgorithm algorithm,
-                                const BuchbergerParams& params, BuchbergerStats& stats) {
-  if (algorithm == ModularAlgorithm::f4) return run_f4(ring, arithmetic, std::move(generators), params, stats);
+                                const BuchbergerParams& params, BuchbergerStats& stats, std::size_t threads) {
+  if (algorithm == ModularAlgorithm::f4) {
+    return run_f4(ring, arithmetic, std::move(generators), params, stats, nullptr, threads);
+  }
   BuchbergerEngine<ModularArithmetic> engine(arithmetic, ring, params, stats);
   BuchbergerEngine<ModularArithmetic>::Outcome outcome;
   engine.run(std::move(generators), outcome);

@@ -16,12 +16,13 @@ namespace {
 class F4Engine {
  public:
   F4Engine(const Ring& ring, const ModularArithmetic& arithmetic, const BuchbergerParams& params,
-           BuchbergerStats& stats, F4Trace* learn)
+           BuchbergerStats& stats, F4Trace* learn, std::size_t threads)
       : ring_(ring),
         arithmetic_(arithmetic),
         params_(params),
         stats_(stats),
         learn_(learn),
+        threads_(threads),
         queue_(ring, params, stats),
         use_sugar_(params.variant.strategy == SelectionStrategy::sugar ||
                    (params.variant.strategy == SelectionStrategy::automatic && ring.is_elimination_order())) {}
@@ -97,7 +98,7 @@ class F4Engine {
     }
     const MacaulayMatrix matrix =
         build_macaulay_matrix(ring_, basis_.polynomials(), basis_.reducers(), pairs, params_.budget);
-    EchelonResult echelon = reduce_to_row_echelon(matrix, arithmetic_.modulus(), params_.budget);
+    EchelonResult echelon = reduce_to_row_echelon(matrix, arithmetic_.modulus(), params_.budget, threads_);
     stats_.reductions += selected.size();
     stats_.reduction_steps += matrix.to_reduce.size();
     stats_.work += echelon.work;
@@ -121,6 +122,7 @@ class F4Engine {
   const BuchbergerParams& params_;
   BuchbergerStats& stats_;
   F4Trace* learn_;
+  std::size_t threads_;  // for the matrices' echelon step
   SPairQueue queue_;
   bool use_sugar_;
   std::optional<SPair> held_;
@@ -130,8 +132,8 @@ class F4Engine {
 }  // namespace
 
 F4Outcome run_f4(const Ring& ring, const ModularArithmetic& arithmetic, std::vector<ModPolynomial> generators,
-                 const BuchbergerParams& params, BuchbergerStats& stats, F4Trace* learn) {
-  return F4Engine(ring, arithmetic, params, stats, learn).run(std::move(generators));
+                 const BuchbergerParams& params, BuchbergerStats& stats, F4Trace* learn, std::size_t threads) {
+  return F4Engine(ring, arithmetic, params, stats, learn, threads).run(std::move(generators));
 }
 
 }  // namespace implicitizer::detail

@@ -36,15 +36,17 @@ struct F4Outcome {
 // tail_reduce is implied (matrix rows are fully reduced by the pivots). Counts pairs,
 // criteria, rows reduced and work in `stats`. Throws LimitExceeded from params.budget.
 // With `learn`, the run's path is recorded there for replays on other primes
-// (f4_trace.hpp).
+// (f4_trace.hpp). `threads` share each large matrix's echelon step
+// (reduce_to_row_echelon): for a run that has the machine to itself.
 F4Outcome run_f4(const Ring& ring, const ModularArithmetic& arithmetic, std::vector<ModPolynomial> generators,
-                 const BuchbergerParams& params, BuchbergerStats& stats, F4Trace* learn = nullptr);
+                 const BuchbergerParams& params, BuchbergerStats& stats, F4Trace* learn = nullptr,
+                 std::size_t threads = 1);
 
-// The same outcome by `algorithm`: run_f4, or the Buchberger engine modulo p (defined
-// in f4.cpp, beside the public entry point).
+// The same outcome by `algorithm`: run_f4 (with `threads`), or the Buchberger engine
+// modulo p (defined in f4.cpp, beside the public entry point).
 F4Outcome run_modular_algorithm(const Ring& ring, const ModularArithmetic& arithmetic,
                                 std::vector<ModPolynomial> generators, ModularAlgorithm algorithm,
-                                const BuchbergerParams& params, BuchbergerStats& stats);
+                                const BuchbergerParams& params, BuchbergerStats& stats, std::size_t threads = 1);
 
 // The reduced basis of a Gröbner basis modulo p, as `algorithm` makes it: by one
 // Macaulay matrix after F4 (f4_interreduce.hpp), by polynomial reduction after

@@ -1,5 +1,8 @@
 #include "f4_row_echelon.hpp"
 
+#include <atomic>
+
+#include "implicitizer/modular/one_per_thread.hpp"
 #include "reducer.hpp"
 
 namespace implicitizer::detail {
@@ -11,6 +14,11 @@ constexpr const char* kWhere = "F4 matrix reduction";
 // Rows between two budget checks: a row of the largest matrices measured (cyclic-7)
 // costs well under a millisecond, so a stop is noticed within a few milliseconds.
 constexpr std::size_t kRowsPerCheck = 8;
+
+// Rows to reduce times columns from which a matrix's rows are shared among threads:
+// on cyclic-7 such a matrix takes a few milliseconds on one thread, against the tens
+// of microseconds that starting a thread costs on an idle machine.
+constexpr std::size_t kConcurrentCells = 60'000;
 
 // Reduces the accumulator from column `start` on: every column with a pivot is
 // eliminated, the others are moved (reduced modulo p) into `out`. Leaves the
@@ -65,22 +73,71 @@ void make_monic(MatrixRow& row, const nmod_t& modulus) {
   row.coefficients = row.owned.data();
 }
 
+// The rows to reduce, each eliminated by the matrix's pivots alone (not by the new
+// rows): `threads` threads take the rows from one counter, each with its own
+// accumulator. What is left of a row lies in columns without a pivot, reduced
+// modulo p, in increasing order (empty when the row reduced to zero).
+std::vector<MatrixRow> reduce_by_pivots(const MacaulayMatrix& matrix, const std::vector<const MatrixRow*>& pivot,
+                                        const nmod_t& modulus, const Budget& budget, std::size_t threads,
+                                        std::uint64_t& work) {
+  std::vector<MatrixRow> partial(matrix.to_reduce.size());
+  std::vector<std::uint64_t> work_per_thread(threads, 0);
+  std::atomic<std::size_t> next = 0;
+  std::atomic<bool> stop = false;
+  const bool delayed = modulus.n < (std::uint64_t{1} << 31);
+  run_one_per_thread(threads, [&](std::size_t t) {
+    std::vector<std::uint64_t> acc(matrix.columns, 0);
+    try {
+      for (std::size_t k; !stop.load(std::memory_order_relaxed) && (k = next.fetch_add(1)) < partial.size();) {
+        if (k % kRowsPerCheck == 0) budget.check(kWhere);
+        if (t == 0) budget.report_step(kWhere, k, partial.size());
+        const MatrixRow& row = matrix.to_reduce[k];
+        for (std::size_t i = 0; i < row.size(); ++i) acc[row.columns[i]] = row.coefficients[i];
+        const std::uint64_t terms = delayed ? eliminate_dense<true>(acc, row.lead(), pivot, modulus, partial[k])
+                                            : eliminate_dense<false>(acc, row.lead(), pivot, modulus, partial[k]);
+        const std::uint64_t row_work = kWorkPerStep + kWorkPerModularTerm * (terms + row.size());
+        work_per_thread[t] += row_work;
+        budget.charge_work(row_work, kWhere);
+        partial[k].coefficients = partial[k].owned.data();
+      }
+    } catch (...) {
+      stop = true;  // the others stop at their next row; the error is rethrown
+      throw;
+    }
+  });
+  for (const std::uint64_t w : work_per_thread) work += w;
+  return partial;
+}
+
 }  // namespace
 
-EchelonResult reduce_to_row_echelon(const MacaulayMatrix& matrix, const nmod_t& modulus, const Budget& budget) {
+EchelonResult reduce_to_row_echelon(const MacaulayMatrix& matrix, const nmod_t& modulus, const Budget& budget,
+                                    std::size_t threads) {
   EchelonResult result;
   std::vector<const MatrixRow*> pivot(matrix.columns, nullptr);
   for (const MatrixRow& r : matrix.pivots) pivot[r.lead()] = &r;
   // Reserved: the pivot table points into new_rows as rows are found.
   result.new_rows.reserve(matrix.to_reduce.size());
+  // With threads, the rows are first eliminated by the matrix's pivots concurrently,
+  // then one after the other by the new rows (which lie in columns without a pivot,
+  // so that they bring no pivot's column back). Each new row is the same as
+  // sequentially: row k's remainder by the pivots and the new rows before it, zero at
+  // all their leading columns, is unique (a non-zero combination of rows with
+  // distinct leading columns is non-zero at the leftmost of them).
+  const bool concurrent =
+      threads > 1 && matrix.to_reduce.size() > 1 && matrix.to_reduce.size() * matrix.columns >= kConcurrentCells;
+  std::vector<MatrixRow> partial;
+  if (concurrent) partial = reduce_by_pivots(matrix, pivot, modulus, budget, threads, result.work);
+  const std::vector<MatrixRow>& rows = concurrent ? partial : matrix.to_reduce;
   std::vector<std::uint64_t> acc(matrix.columns, 0);
   const bool delayed = modulus.n < (std::uint64_t{1} << 31);
-  for (std::size_t k = 0; k < matrix.to_reduce.size(); ++k) {
+  for (std::size_t k = 0; k < rows.size(); ++k) {
     if (k % kRowsPerCheck == 0) {
       budget.check(kWhere);
-      budget.report_step(kWhere, k, matrix.to_reduce.size());
+      if (!concurrent) budget.report_step(kWhere, k, rows.size());
     }
-    const MatrixRow& row = matrix.to_reduce[k];
+    const MatrixRow& row = rows[k];
+    if (row.columns.empty()) continue;  // reduced to zero by the pivots
     for (std::size_t i = 0; i < row.size(); ++i) acc[row.columns[i]] = row.coefficients[i];
     MatrixRow out;
     const std::uint64_t terms = delayed ? eliminate_dense<true>(acc, row.lead(), pivot, modulus, out)

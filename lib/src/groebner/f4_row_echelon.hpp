@@ -31,8 +31,11 @@ struct EchelonResult {
 };
 
 // Reduces matrix.to_reduce; checks `budget` (time, memory, cancellation, work) every
-// few rows and its term limit on every row produced. Throws LimitExceeded.
-EchelonResult reduce_to_row_echelon(const MacaulayMatrix& matrix, const nmod_t& modulus, const Budget& budget);
+// few rows and its term limit on every row produced. Throws LimitExceeded. With
+// `threads` > 1, a large matrix's rows are first eliminated by its pivots on that
+// many threads, then by the new rows on this one: the same result.
+EchelonResult reduce_to_row_echelon(const MacaulayMatrix& matrix, const nmod_t& modulus, const Budget& budget,
+                                    std::size_t threads = 1);
 
 // `row` (monic) with every column after its leading one eliminated by `pivot` (per
 // column, a monic row leading there, or nullptr); `acc` is a zero accumulator of

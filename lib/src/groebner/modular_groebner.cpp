@@ -99,10 +99,11 @@ ModPolynomial dehomogenize_modulo(const ModPolynomial& f, const Ring& from, cons
 }
 
 // The reduced basis modulo `prime`: by replaying `trace` when there is one, recording
-// into `learn` when asked (F4 only).
+// into `learn` when asked (F4 only); a run in full shares F4's echelon steps among
+// `threads` threads.
 PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generators, std::uint64_t prime,
                    const ModularGroebnerParams& params, const Projection& projection, const detail::F4Trace* trace,
-                   detail::F4Trace* learn) {
+                   detail::F4Trace* learn, std::size_t threads) {
   PrimeRun run;
   run.prime = prime;
   const detail::ModularArithmetic arithmetic(ring, prime);
@@ -121,10 +122,11 @@ PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generator
     run.replay_failed = !run.replayed;
   }
   detail::F4Outcome outcome =
-      replayed           ? std::move(*replayed)
-      : learn != nullptr ? detail::run_f4(ring, arithmetic, std::move(reduced), params.buchberger, run.stats, learn)
-                         : detail::run_modular_algorithm(ring, arithmetic, std::move(reduced), params.algorithm,
-                                                         params.buchberger, run.stats);
+      replayed ? std::move(*replayed)
+      : learn != nullptr
+          ? detail::run_f4(ring, arithmetic, std::move(reduced), params.buchberger, run.stats, learn, threads)
+          : detail::run_modular_algorithm(ring, arithmetic, std::move(reduced), params.algorithm, params.buchberger,
+                                          run.stats, threads);
   const Ring& lift_ring = projection.affine != nullptr ? *projection.affine : ring;
   if (outcome.unit) {
     ModPolynomial one;
@@ -460,10 +462,13 @@ class ModularDriver {
       const bool learning = params_.trace && params_.algorithm == ModularAlgorithm::f4 && !stats_.trace_dropped &&
                             trace_ == nullptr && primes.size() == 1;
       auto learned = learning ? std::make_unique<detail::F4Trace>() : nullptr;
+      // A prime run alone (the first, or each while a prime is not worth a thread)
+      // shares its matrices' echelon steps among the threads.
+      const std::size_t echelon_threads = primes.size() == 1 ? threads_ : 1;
       std::vector<PrimeRun> runs(primes.size());
       run_one_per_thread(primes.size(), [&](std::size_t k) {
         runs[k] = run_prime(*run_ring_, generators_, primes[k], params_, projection_, replay ? trace_.get() : nullptr,
-                            learned.get());
+                            learned.get(), echelon_threads);
       });
       for (auto& r : runs) {
         if (r.bad) {

@@ -41,11 +41,17 @@ bool CrtLift::add(std::span<const mp_limb_t> residues, mp_limb_t p) {
     Fmpz product, half;
     fmpz_mul_ui(product.get(), modulus_.get(), p);
     fmpz_fdiv_q_2exp(half.get(), product.get(), 1);
+    // An entry grows by about a limb every prime, and GMP would reallocate it to the
+    // exact size each time: one without room for the next gets twice what it needs.
+    const auto room = static_cast<int>(2 * (fmpz_size(product.get()) + 1));
     for (std::size_t i = 0; i < residues_.size(); ++i) {
       fmpz* x = residues_[i].get();
       const mp_limb_t difference = n_submod(residues[i], fmpz_fdiv_ui(x, p), p);
       if (difference == 0) continue;
       changed = true;
+      if (COEFF_IS_MPZ(*x) && COEFF_TO_PTR(*x)->_mp_alloc < room / 2) {
+        mpz_realloc2(COEFF_TO_PTR(*x), static_cast<mp_bitcnt_t>(room) * FLINT_BITS);
+      }
       fmpz_addmul_ui(x, modulus_.get(), n_mulmod_shoup(inverse, difference, inverse_quotient, p));
       if (fmpz_cmp(x, half.get()) > 0) fmpz_sub(x, x, product.get());
     }
