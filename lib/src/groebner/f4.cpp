@@ -27,8 +27,11 @@ F4Outcome run_modular_algorithm(const Ring& ring, const ModularArithmetic& arith
 
 std::vector<ModPolynomial> reduce_modular_basis(const Ring& ring, const ModularArithmetic& arithmetic,
                                                 std::vector<ModPolynomial> basis, ModularAlgorithm algorithm,
-                                                const Budget& budget) {
-  if (algorithm == ModularAlgorithm::f4) return reduce_basis_by_matrix(ring, arithmetic, std::move(basis), budget);
+                                                const Budget& budget, const InterreductionPlan* replay,
+                                                InterreductionPlan* record) {
+  if (algorithm == ModularAlgorithm::f4) {
+    return reduce_basis_by_matrix(ring, arithmetic, std::move(basis), budget, replay, record);
+  }
   return arithmetic.reduce_basis(std::move(basis), budget);
 }
 

@@ -22,6 +22,7 @@
 namespace implicitizer::detail {
 
 class F4Trace;
+class InterreductionPlan;
 
 // What an F4 run leaves: the unit ideal, or a Gröbner basis (minimal: no leading
 // monomial divides another's; neither interreduced nor sorted).
@@ -51,8 +52,10 @@ F4Outcome run_modular_algorithm(const Ring& ring, const ModularArithmetic& arith
 // The reduced basis of a Gröbner basis modulo p, as `algorithm` makes it: by one
 // Macaulay matrix after F4 (f4_interreduce.hpp), by polynomial reduction after
 // Buchberger (ModularArithmetic::reduce_basis). Defined in f4.cpp.
+// With F4, `replay` and `record` are reduce_basis_by_matrix's (f4_interreduce.hpp).
 std::vector<ModPolynomial> reduce_modular_basis(const Ring& ring, const ModularArithmetic& arithmetic,
                                                 std::vector<ModPolynomial> basis, ModularAlgorithm algorithm,
-                                                const Budget& budget);
+                                                const Budget& budget, const InterreductionPlan* replay = nullptr,
+                                                InterreductionPlan* record = nullptr);
 
 }  // namespace implicitizer::detail

@@ -1,5 +1,6 @@
 #include "f4_row_echelon.hpp"
 
+#include <algorithm>
 #include <atomic>
 
 #include "implicitizer/modular/one_per_thread.hpp"
@@ -20,16 +21,20 @@ constexpr std::size_t kRowsPerCheck = 8;
 // of microseconds that starting a thread costs on an idle machine.
 constexpr std::size_t kConcurrentCells = 60'000;
 
-// Reduces the accumulator from column `start` on: every column with a pivot is
-// eliminated, the others are moved (reduced modulo p) into `out`. Leaves the
-// accumulator zero. `kDelayed`: entries in [0, p²), else in [0, p).
+// Reduces the accumulator, loaded with `row`, from column `start` on: every column
+// with a pivot is eliminated, the others are moved (reduced modulo p) into `out`.
+// Leaves the accumulator zero. `kDelayed`: entries in [0, p²), else in [0, p). The
+// scan ends after the last column the row or a pivot subtracted reaches: the
+// accumulator is zero beyond (a basis element of low degree lies in the last
+// columns, far from the end of one of high degree).
 template <bool kDelayed>
-std::uint64_t eliminate_dense(std::vector<std::uint64_t>& acc, std::uint32_t start,
+std::uint64_t eliminate_dense(std::vector<std::uint64_t>& acc, const MatrixRow& row, std::uint32_t start,
                               const std::vector<const MatrixRow*>& pivot, const nmod_t& modulus, MatrixRow& out) {
   const std::uint64_t p = modulus.n;
   const std::uint64_t p2 = kDelayed ? p * p : 0;
   std::uint64_t terms = 0;
-  for (std::size_t c = start; c < acc.size(); ++c) {
+  std::size_t end = row.columns.back() + std::size_t{1};
+  for (std::size_t c = start; c < end; ++c) {
     std::uint64_t v = acc[c];
     if (v == 0) continue;
     acc[c] = 0;
@@ -43,6 +48,7 @@ std::uint64_t eliminate_dense(std::vector<std::uint64_t>& acc, std::uint32_t sta
     }
     // acc −= v·r, the pivot being monic: its leading column is the one just cleared.
     const std::size_t n = r->size();
+    end = std::max<std::size_t>(end, r->columns.back() + std::size_t{1});
     const std::uint32_t* cols = r->columns.data();
     const std::uint64_t* coefs = r->coefficients;
     terms += n;
@@ -93,8 +99,8 @@ std::vector<MatrixRow> reduce_by_pivots(const MacaulayMatrix& matrix, const std:
         if (t == 0) budget.report_step(kWhere, k, partial.size());
         const MatrixRow& row = matrix.to_reduce[k];
         for (std::size_t i = 0; i < row.size(); ++i) acc[row.columns[i]] = row.coefficients[i];
-        const std::uint64_t terms = delayed ? eliminate_dense<true>(acc, row.lead(), pivot, modulus, partial[k])
-                                            : eliminate_dense<false>(acc, row.lead(), pivot, modulus, partial[k]);
+        const std::uint64_t terms = delayed ? eliminate_dense<true>(acc, row, row.lead(), pivot, modulus, partial[k])
+                                            : eliminate_dense<false>(acc, row, row.lead(), pivot, modulus, partial[k]);
         const std::uint64_t row_work = kWorkPerStep + kWorkPerModularTerm * (terms + row.size());
         work_per_thread[t] += row_work;
         budget.charge_work(row_work, kWhere);
@@ -140,8 +146,8 @@ EchelonResult reduce_to_row_echelon(const MacaulayMatrix& matrix, const nmod_t& 
     if (row.columns.empty()) continue;  // reduced to zero by the pivots
     for (std::size_t i = 0; i < row.size(); ++i) acc[row.columns[i]] = row.coefficients[i];
     MatrixRow out;
-    const std::uint64_t terms = delayed ? eliminate_dense<true>(acc, row.lead(), pivot, modulus, out)
-                                        : eliminate_dense<false>(acc, row.lead(), pivot, modulus, out);
+    const std::uint64_t terms = delayed ? eliminate_dense<true>(acc, row, row.lead(), pivot, modulus, out)
+                                        : eliminate_dense<false>(acc, row, row.lead(), pivot, modulus, out);
     const std::uint64_t work = kWorkPerStep + kWorkPerModularTerm * (terms + row.size());
     result.work += work;
     budget.charge_work(work, kWhere);
@@ -161,7 +167,7 @@ MatrixRow reduce_tail(const MatrixRow& row, const std::vector<const MatrixRow*>&
   out.columns.push_back(row.lead());
   out.owned.push_back(1);
   for (std::size_t i = 1; i < row.size(); ++i) acc[row.columns[i]] = row.coefficients[i];
-  eliminate_dense<false>(acc, row.lead() + 1, pivot, modulus, out);
+  eliminate_dense<false>(acc, row, row.lead() + 1, pivot, modulus, out);
   out.coefficients = out.owned.data();
   return out;
 }

@@ -10,6 +10,8 @@
 // - symbolic preprocessing (each row is stored as basis index and columns),
 // - every row that reduced to zero, and every pivot that no remaining row reaches
 //   (on the classic ideals about four rows in five reduce to zero).
+// - the symbolic preprocessing of the final interreduction (f4_interreduce.hpp),
+//   when the basis has the learned prime's supports.
 //
 // A replay checks what it can: each step must produce new rows with the recorded
 // leading columns, in order, or it gives up and the prime is run in full. What it
@@ -25,6 +27,7 @@
 #include <vector>
 
 #include "f4_engine.hpp"
+#include "f4_interreduce.hpp"
 #include "f4_matrix.hpp"
 #include "f4_row_echelon.hpp"
 
@@ -46,6 +49,11 @@ class F4Trace {
   }
   // Whether the learning run ended with a basis (not the unit ideal, not stopped).
   bool complete() const { return complete_; }
+
+  // The final interreduction's matrix, recorded by the learning run's caller after
+  // F4 (f4_interreduce.hpp), and replayed by the other primes': part of the path.
+  InterreductionPlan& interreduction() { return interreduction_; }
+  const InterreductionPlan& interreduction() const { return interreduction_; }
 
   // The run's outcome modulo `arithmetic`'s prime on `generators` (monic, the same
   // polynomials as the learning run's modulo another prime), or nullopt when the
@@ -71,6 +79,7 @@ class F4Trace {
   std::size_t generators_ = 0;
   std::vector<Step> steps_;
   std::vector<std::size_t> minimal_basis_;
+  InterreductionPlan interreduction_;
   bool complete_ = false;
 };
 

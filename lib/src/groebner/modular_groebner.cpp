@@ -128,6 +128,10 @@ PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generator
           : detail::run_modular_algorithm(ring, arithmetic, std::move(reduced), params.algorithm, params.buchberger,
                                           run.stats, threads);
   const Ring& lift_ring = projection.affine != nullptr ? *projection.affine : ring;
+  // The final interreduction is part of the path: recorded by the learning prime,
+  // replayed by the others (by any prime whose basis has the recorded supports).
+  const detail::InterreductionPlan* replayed_plan = trace != nullptr ? &trace->interreduction() : nullptr;
+  detail::InterreductionPlan* recorded_plan = learn != nullptr ? &learn->interreduction() : nullptr;
   if (outcome.unit) {
     ModPolynomial one;
     one.coefficients.push_back(1);
@@ -140,10 +144,10 @@ PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generator
       dehomogenized.push_back(dehomogenize_modulo(g, ring, lift_ring, arithmetic.modulus()));
     }
     run.basis = detail::reduce_modular_basis(lift_ring, affine, std::move(dehomogenized), params.algorithm,
-                                             params.buchberger.budget);
+                                             params.buchberger.budget, replayed_plan, recorded_plan);
   } else {
     run.basis = detail::reduce_modular_basis(ring, arithmetic, std::move(outcome.basis), params.algorithm,
-                                             params.buchberger.budget);
+                                             params.buchberger.budget, replayed_plan, recorded_plan);
   }
   if (projection.free_of_first > 0) {
     std::erase_if(run.basis, [&](const ModPolynomial& g) {
