@@ -161,6 +161,38 @@ TEST(CrtLift, AValueThatALaterPrimeRefutesIsReconstructedAgain) {
   EXPECT_EQ(values_of(lift), values);
 }
 
+TEST(CrtLift, AConfirmedValueStandsForTheIntegerUntilAPrimeRefutesIt) {
+  // X ≡ 1/3 modulo p·q, X an integer of about p·q/3: p alone reconstructs 1/3, q
+  // confirms it, and while it stands the integer is computed from it; the third
+  // prime r refutes it, and the integer of the three primes is X again.
+  PrimeSequence primes;
+  const mp_limb_t p = primes.next(), q = primes.next(), r = primes.next();
+  const mpz_class pq = mpz_class(static_cast<unsigned long>(p)) * static_cast<unsigned long>(q);
+  const mpz_class x = pq % 3 == 2 ? mpz_class((pq + 1) / 3) : mpz_class((2 * pq + 1) / 3);
+  const std::vector<mpq_class> values = {mpq_class(x), mpq_class(-7)};
+  CrtLift lift(values.size());
+  lift.add(images_of(values, p), p);
+  ASSERT_TRUE(lift.reconstruct());
+  EXPECT_EQ(values_of(lift), (std::vector<mpq_class>{mpq_class(1, 3), mpq_class(-7)}));
+  EXPECT_TRUE(lift.add(images_of(values, q), q));  // 1/3 is not an integer
+  EXPECT_EQ(lift.integer(0), x);
+  EXPECT_EQ(lift.integer(1), -7);
+  // r refutes 1/3: the integer brought back from it is X, which r does not change.
+  EXPECT_FALSE(lift.add(images_of(values, r), r));
+  EXPECT_EQ(lift.integer(0), x);
+  EXPECT_EQ(lift.integer(1), -7);
+  EXPECT_FALSE(lift.reconstruct());  // X has 122 bits, past Wang's bound for three primes
+  // -7 stood for its integer through q and r; a fourth prime changes nothing of it.
+  const mp_limb_t s = primes.next();
+  const std::vector<mpq_class> settled = {mpq_class(-7)};
+  CrtLift integral(1);
+  integral.add(images_of(settled, p), p);
+  ASSERT_TRUE(integral.reconstruct());
+  integral.add(images_of(settled, q), q);
+  EXPECT_FALSE(integral.add(images_of(settled, s), s));
+  EXPECT_EQ(integral.integer(0), -7);
+}
+
 TEST(CrtLift, SpreadInsertsEntriesThatAreZeroModuloEveryPrimeSoFar) {
   const std::vector<mpq_class> before = {mpq_class(5, 3), mpq_class(-7)};
   // After the spread: a new entry first, the old ones at 1 and 3, a new one at 2.

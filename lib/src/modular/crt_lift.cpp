@@ -9,7 +9,7 @@
 namespace implicitizer {
 
 CrtLift::CrtLift(std::size_t size, CrtLiftParams params)
-    : params_(params), residues_(size), values_(size), known_(size, 0), confirmed_(size, 0) {
+    : params_(params), residues_(size), values_(size), known_(size, 0), confirmed_(size, 0), current_(size, 1) {
   if (params_.shared_denominator && params_.margin_bits == 0) {
     throw std::invalid_argument("CrtLift: a shared denominator needs a margin");
   }
@@ -45,6 +45,13 @@ bool CrtLift::add(std::span<const mp_limb_t> residues, mp_limb_t p) {
     // exact size each time: one without room for the next gets twice what it needs.
     const auto room = static_cast<int>(2 * (fmpz_size(product.get()) + 1));
     for (std::size_t i = 0; i < residues_.size(); ++i) {
+      if (confirmed_[i]) {
+        // The value stands for the integer (check_values brings it back if p refutes
+        // the value); the integer of an integral value is the value itself.
+        current_[i] = 0;
+        changed = changed || !fmpz_is_one(fmpq_denref(values_[i].get()));
+        continue;
+      }
       fmpz* x = residues_[i].get();
       const mp_limb_t difference = n_submod(residues[i], fmpz_fdiv_ui(x, p), p);
       if (difference == 0) continue;
@@ -76,7 +83,12 @@ void CrtLift::check_values(std::span<const mp_limb_t> residues, mp_limb_t p) {
       confirmed_[i] = 1;
       fmpz_lcm(denominator_.get(), denominator_.get(), fmpq_denref(v));
     }
-    if (!agrees) known_[i] = confirmed_[i] = 0;
+    if (!agrees) {
+      // Every prime since the integer was last kept agreed with the value.
+      if (!current_[i]) value_modulo(i, residues_[i].get());
+      current_[i] = 1;
+      known_[i] = confirmed_[i] = 0;
+    }
   }
 }
 
@@ -84,7 +96,7 @@ void CrtLift::spread(std::span<const std::size_t> positions, std::size_t new_siz
   if (positions.size() != residues_.size()) throw std::invalid_argument("CrtLift::spread: one position per entry");
   std::vector<Fmpz> residues(new_size);
   std::vector<Fmpq> values(new_size);
-  std::vector<char> known(new_size, 0), confirmed(new_size, 0);
+  std::vector<char> known(new_size, 0), confirmed(new_size, 0), current(new_size, 1);
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const std::size_t to = positions[i];
     if (to >= new_size || (i > 0 && to <= positions[i - 1])) {
@@ -94,16 +106,33 @@ void CrtLift::spread(std::span<const std::size_t> positions, std::size_t new_siz
     values[to] = std::move(values_[i]);
     known[to] = known_[i];
     confirmed[to] = confirmed_[i];
+    current[to] = current_[i];
   }
   residues_ = std::move(residues);
   values_ = std::move(values);
   known_ = std::move(known);
   confirmed_ = std::move(confirmed);
+  current_ = std::move(current);
+}
+
+void CrtLift::value_modulo(std::size_t i, fmpz_t out) const {
+  const fmpq* v = values_[i].get();
+  if (!fmpz_invmod(out, fmpq_denref(v), modulus_.get())) {
+    throw std::logic_error("CrtLift: a confirmed denominator shares a factor with the modulus");
+  }
+  fmpz_mul(out, out, fmpq_numref(v));
+  fmpz_smod(out, out, modulus_.get());
 }
 
 Integer CrtLift::integer(std::size_t i) const {
   Integer out;
-  fmpz_get_mpz(out.get_mpz_t(), residues_[i].get());
+  if (current_[i]) {
+    fmpz_get_mpz(out.get_mpz_t(), residues_[i].get());
+  } else {
+    Fmpz x;
+    value_modulo(i, x.get());
+    fmpz_get_mpz(out.get_mpz_t(), x.get());
+  }
   return out;
 }
 

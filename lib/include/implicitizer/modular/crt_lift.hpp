@@ -47,7 +47,10 @@ struct CrtLiftParams {
 /// later prime checks: a value a prime refutes is dropped and reconstructed again.
 /// A value that survives is what a reconstruction from scratch would give (the
 /// rational below the bound is unique and the bound only grows), so keeping it
-/// changes no answer and saves the work.
+/// changes no answer and saves the work. Once a later prime confirmed a value, the
+/// value stands for the integer: the next primes are not folded into it (most of
+/// the work of a lift whose entries settle at different primes), and the integer is
+/// computed from the value when asked for or when a prime refutes the value.
 class CrtLift {
  public:
   /// `size` entries, no prime yet (M = 1). Throws std::invalid_argument when
@@ -68,7 +71,8 @@ class CrtLift {
   /// Adds the image modulo `p`, a prime below 2^63 not added before (the update uses
   /// Shoup's multiplication, which needs the top bit clear): residues[i] ∈ [0, p) is
   /// entry i modulo p. Drops the rational values p refutes. Returns whether any
-  /// entry's integer (integer()) changed: false means every integer agrees with p.
+  /// entry's integer (integer()) changed: false means every integer agrees with p
+  /// (an entry whose confirmed value is not an integer counts as changed).
   /// Throws std::invalid_argument when the sizes differ or p ≥ 2^63.
   bool add(std::span<const mp_limb_t> residues, mp_limb_t p);
 
@@ -93,6 +97,8 @@ class CrtLift {
 
  private:
   void check_values(std::span<const mp_limb_t> residues, mp_limb_t p);
+  // The integer in (−M/2, M/2] congruent to entry i's confirmed value.
+  void value_modulo(std::size_t i, fmpz_t out) const;
   bool reconstruct_entry(std::size_t i);
   bool reconstruct_with_trial_denominator();
   Fmpz lcm_of_denominators() const;
@@ -102,6 +108,7 @@ class CrtLift {
   std::vector<Fmpq> values_;
   std::vector<char> known_;      // values_[i] holds a value
   std::vector<char> confirmed_;  // ... that a later prime agreed with
+  std::vector<char> current_;    // residues_[i] is the integer (else the value stands for it)
   std::size_t primes_ = 0;
   Fmpz modulus_;      // M
   Fmpz denominator_;  // L: the lcm of the confirmed values' denominators
