@@ -362,7 +362,8 @@ class ModularDriver {
     std::optional<std::vector<Polynomial>> candidate;
     bool rejected = false;  // the last batch's candidate
     for (;;) {
-      // A candidate is confirmed on further primes before the proof. Without the proof
+      // A candidate is confirmed on further primes before the proof (with the proof,
+      // on the last prime of the batch it was lifted in, below). Without the proof
       // they run in full: a replay follows the learned prime's path and cannot see a
       // row that does not reduce to zero modulo its own prime, so it could confirm what
       // it was built from. With the proof they are replays when the candidate has the
@@ -387,16 +388,25 @@ class ModularDriver {
         drop_trace();
         candidate.reset();
       }
+      std::vector<const PrimeRun*> runs;
+      for (const PrimeRun& run : batch) runs.push_back(&run);
       if (candidate) {
-        if (accepts(*candidate, batch, random)) return *candidate;
-        ++stats_.rejected_candidates;
-        stats_.checking_primes = 0;  // absorbed below, with the others
-        candidate.reset();
-        rejected = true;
+        if (accepts(*candidate, runs, random)) return *candidate;
+        reject(candidate, rejected);
       }
       const Stopwatch timer;
-      for (const PrimeRun& run : batch) {
-        if (!run.replayed || trace_ != nullptr) absorb(run);  // replays of a dropped trace are not trusted
+      std::vector<const PrimeRun*> trusted;  // replays of a dropped trace are not
+      for (const PrimeRun* run : runs) {
+        if (!run->replayed || trace_ != nullptr) trusted.push_back(run);
+      }
+      // With the proof, the batch's last prime joins the lift after the
+      // reconstruction: the candidate was not lifted from it, so it confirms the
+      // candidate as a checking batch would, and with batches of several primes that
+      // batch is saved (with one prime a batch, the reconstruction only comes one
+      // prime later, where the checking prime would have come).
+      const PrimeRun* held = params_.prove && !trusted.empty() ? trusted.back() : nullptr;
+      for (const PrimeRun* run : trusted) {
+        if (run != held) absorb(*run);
       }
       BasisLift* majority = majority_lift();
       // Reconstruction costs about as much as one prime's Chinese remaindering of the
@@ -408,14 +418,30 @@ class ModularDriver {
         candidate = majority->reconstruct(ring_, batch_size_);
         if (!candidate) next_reconstruction_ = majority->primes() + std::max<std::size_t>(1, majority->primes() / 4);
       }
+      if (held != nullptr) absorb(*held);
       stats_.lift_ms += timer.elapsed_ms();
+      // A replayed prime confirms only a candidate with the learned prime's leading
+      // monomials (the proof needs a prime run in full with them); another candidate
+      // waits for a batch run in full, as before.
+      if (candidate && held != nullptr && (!held->replayed || has_learned_leads(*candidate))) {
+        if (accepts(*candidate, {held}, false)) return *candidate;
+        reject(candidate, rejected);
+      }
     }
   }
 
  private:
+  // After a candidate was rejected: the next batch runs in full (run() says why).
+  void reject(std::optional<std::vector<Polynomial>>& candidate, bool& rejected) {
+    ++stats_.rejected_candidates;
+    stats_.checking_primes = 0;  // they join the lift
+    candidate.reset();
+    rejected = true;
+  }
+
   // Whether `candidate` is the answer: confirmed by `batch` (every prime of it when
   // `random`) and, with `prove`, proven over ℚ.
-  bool accepts(const std::vector<Polynomial>& candidate, const std::vector<PrimeRun>& batch, bool random) {
+  bool accepts(const std::vector<Polynomial>& candidate, const std::vector<const PrimeRun*>& batch, bool random) {
     const Stopwatch check_timer;
     std::vector<IntPolynomial> integers;
     for (const auto& g : candidate) integers.push_back(detail::to_int_polynomial(g));
@@ -424,7 +450,7 @@ class ModularDriver {
     if (!confirmed) return false;
     stats_.checking_primes = batch.size();
     if (random) {
-      for (const PrimeRun& run : batch) stats_.random_primes.push_back(run.prime);
+      for (const PrimeRun* run : batch) stats_.random_primes.push_back(run->prime);
     }
     if (!params_.prove) return true;
     const Stopwatch timer;
@@ -555,16 +581,16 @@ class ModularDriver {
   // lucky one that shows the candidate's to be wrong).
   // `integers` is the candidate as primitive integer polynomials.
   bool confirms(const std::vector<Polynomial>& candidate, const std::vector<IntPolynomial>& integers,
-                const std::vector<PrimeRun>& batch, bool every) const {
+                const std::vector<const PrimeRun*>& batch, bool every) const {
     const std::vector<std::int32_t> key = leading_key(*ring_, candidate);
     std::size_t agreeing = 0;
-    for (const PrimeRun& run : batch) {
-      if (agrees_modulo(integers, run, *ring_)) {
+    for (const PrimeRun* run : batch) {
+      if (agrees_modulo(integers, *run, *ring_)) {
         ++agreeing;
         continue;
       }
       // Other leading monomials: an unlucky prime (or the candidate is), no verdict.
-      if (every || leading_key(*ring_, run.basis) == key) return false;
+      if (every || leading_key(*ring_, run->basis) == key) return false;
     }
     return agreeing > 0;
   }
