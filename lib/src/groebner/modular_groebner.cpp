@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <future>
 #include <map>
 #include <memory>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "f4_engine.hpp"
 #include "f4_trace.hpp"
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/core/memory_account.hpp"
 #include "implicitizer/core/stopwatch.hpp"
 #include "implicitizer/groebner/reduced_basis.hpp"
 #include "implicitizer/modular/crt_lift.hpp"
@@ -454,8 +456,12 @@ class ModularDriver {
     }
     if (!params_.prove) return true;
     const Stopwatch timer;
+    // The pairs computed while the primes ran, when they are this candidate's.
+    std::optional<std::vector<detail::SPair>> pairs;
+    if (learned_pairs_.valid() && has_learned_leads(candidate)) pairs = learned_pairs_.get();
     const detail::ProofOutcome proof =
-        detail::prove_groebner_basis(*run_ring_, generators_, integers, params_.buchberger, threads_);
+        detail::prove_groebner_basis(*run_ring_, generators_, integers, params_.buchberger, threads_,
+                                     detail::ProofRows::by_coefficient_size, pairs ? &*pairs : nullptr);
     stats_.verification_pairs += proof.pairs;
     stats_.proof_content_divisions += proof.content_divisions;
     stats_.verify_ms += timer.elapsed_ms();
@@ -512,6 +518,7 @@ class ModularDriver {
         if (learned != nullptr && learned->complete()) {
           trace_ = std::move(learned);
           trace_key_ = leading_key(*ring_, r.basis);
+          if (params_.prove) start_proof_pairs();
         }
         // How many primes the lift needs is known only when reconstruction succeeds.
         params_.buchberger.budget.report_stage("modular Groebner basis (primes)", stats_.primes, 0);
@@ -522,6 +529,19 @@ class ModularDriver {
     if (stats_.primes == batch.size() && ms > kThreadWorthMs) batch_size_ = threads_;
     stats_.modular_ms += ms;
     return batch;
+  }
+
+  // The proof's pairs depend only on the candidate's leading monomials, which the
+  // learned prime already has (every replay, and so the lift, keeps them): they are
+  // computed on a thread of their own while the other primes run, where the proof
+  // would compute them while the other threads wait (docs/algorithms.md, "F4 modulo
+  // primes", item 7).
+  void start_proof_pairs() {
+    MemoryAccount* const account = current_memory_account();
+    learned_pairs_ = std::async(std::launch::async, [this, account, key = trace_key_] {
+      const MemoryScope scope(account);
+      return detail::proof_pairs(*run_ring_, key, params_.buchberger);
+    });
   }
 
   // Whether a prime run in full has other leading monomials than the prime the trace
@@ -608,8 +628,9 @@ class ModularDriver {
   std::size_t next_reconstruction_ = 1;   // lifted primes needed before the next reconstruction
   std::size_t next_audit_ = kFirstAudit;  // primes after which a batch runs in full despite a trace
   std::map<std::vector<std::int32_t>, BasisLift> lifts_;
-  std::unique_ptr<const detail::F4Trace> trace_;  // the first prime's F4 run, replayed on the others
-  std::vector<std::int32_t> trace_key_;           // the leading monomials that prime found
+  std::unique_ptr<const detail::F4Trace> trace_;           // the first prime's F4 run, replayed on the others
+  std::vector<std::int32_t> trace_key_;                    // the leading monomials that prime found
+  std::future<std::vector<detail::SPair>> learned_pairs_;  // the proof's pairs on trace_key_
 };
 
 }  // namespace

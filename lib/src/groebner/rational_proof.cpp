@@ -34,29 +34,6 @@ constexpr std::size_t kContentGrowth = 8;
 // the work allowance is charged at every step).
 constexpr std::size_t kStepsBetweenChecks = 64;
 
-// The S-pairs of `basis` that Gebauer–Möller's update (and the product criterion)
-// leave, as the Buchberger engine would reduce them on a candidate whose every
-// S-polynomial reduces to zero: then no element is added, so these are all its pairs.
-std::vector<SPair> criterion_pairs(const Ring& ring, const std::vector<IntPolynomial>& basis,
-                                   const BuchbergerParams& params) {
-  BuchbergerStats stats;
-  SPairQueue queue(ring, params, stats);
-  GrowingBasis<IntPolynomial> entries(ring, queue);
-  // The criteria read leading monomials only (the sugar only orders the queue, and
-  // every pair left is taken): the leading terms stand for the elements, which spares
-  // copying every coefficient.
-  const std::size_t w = ring.monomial_size();
-  std::vector<IntPolynomial> leads(basis.size());
-  for (std::size_t i = 0; i < basis.size(); ++i) {
-    leads[i].coefficients.push_back(basis[i].coefficients.front());
-    leads[i].monomials.assign(basis[i].monomials.begin(), basis[i].monomials.begin() + static_cast<long>(w));
-  }
-  entries.insert_generators(std::move(leads), params.budget, "the proof over Q (the pairs)");
-  std::vector<SPair> pairs;
-  for (SPair pair; queue.pop(entries.entries(), pair);) pairs.push_back(std::move(pair));
-  return pairs;
-}
-
 // One polynomial to check: the S-polynomial of basis elements i and j, or generator i.
 struct Check {
   bool is_pair = false;
@@ -455,11 +432,43 @@ ChecksRun run_checks(DegreeSchedule& schedule, const std::vector<IntPolynomial>&
 
 }  // namespace
 
+// As the Buchberger engine would reduce them on a candidate whose every S-polynomial
+// reduces to zero: then no element is added, so these are all its pairs.
+std::vector<SPair> proof_pairs(const Ring& ring, const std::vector<std::int32_t>& leading_monomials,
+                               const BuchbergerParams& params) {
+  BuchbergerStats stats;
+  SPairQueue queue(ring, params, stats);
+  GrowingBasis<IntPolynomial> entries(ring, queue);
+  // The criteria read leading monomials only (the sugar only orders the queue, and
+  // every pair left is taken): one-term polynomials stand for the elements.
+  const std::size_t w = ring.monomial_size();
+  std::vector<IntPolynomial> leads(leading_monomials.size() / w);
+  for (std::size_t i = 0; i < leads.size(); ++i) {
+    leads[i].coefficients.emplace_back(1);
+    leads[i].monomials.assign(leading_monomials.begin() + static_cast<long>(i * w),
+                              leading_monomials.begin() + static_cast<long>((i + 1) * w));
+  }
+  entries.insert_generators(std::move(leads), params.budget, "the proof over Q (the pairs)");
+  std::vector<SPair> pairs;
+  for (SPair pair; queue.pop(entries.entries(), pair);) pairs.push_back(std::move(pair));
+  return pairs;
+}
+
 ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynomial>& generators,
                                   const std::vector<IntPolynomial>& basis, const BuchbergerParams& params,
-                                  std::size_t threads, ProofRows rows) {
+                                  std::size_t threads, ProofRows rows, const std::vector<SPair>* given_pairs) {
   const Budget& budget = params.budget;
-  const std::vector<SPair> pairs = criterion_pairs(ring, basis, params);
+  std::vector<SPair> own_pairs;
+  if (given_pairs == nullptr) {
+    std::vector<std::int32_t> leading_monomials;
+    const std::size_t w = ring.monomial_size();
+    for (const IntPolynomial& g : basis) {
+      leading_monomials.insert(leading_monomials.end(), g.monomials.begin(),
+                               g.monomials.begin() + static_cast<long>(w));
+    }
+    own_pairs = proof_pairs(ring, leading_monomials, params);
+  }
+  const std::vector<SPair>& pairs = given_pairs != nullptr ? *given_pairs : own_pairs;
   std::vector<BasicReducer<IntPolynomial>> reducers;
   for (const auto& g : basis) reducers.push_back({&g, ring.divisor_mask(g.monomials.data()), 0});
 

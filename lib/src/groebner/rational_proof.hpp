@@ -27,6 +27,7 @@
 #include "implicitizer/groebner/buchberger.hpp"
 #include "implicitizer/polynomial/ring.hpp"
 #include "int_polynomial.hpp"
+#include "s_pair_queue.hpp"
 
 namespace implicitizer::detail {
 
@@ -45,12 +46,20 @@ struct ProofOutcome {
 enum class ProofRows { by_coefficient_size, limbs, gmp };
 inline constexpr std::size_t kLimbRowCoefficientBits = 1024;
 
+// The S-pairs the proof checks on a candidate with these leading monomials
+// (monomial_size words each, concatenated, in the candidate's order): those
+// Gebauer–Möller's update and the product criterion leave. They depend on nothing
+// else, so the multi-modular route computes them while the primes run.
+std::vector<SPair> proof_pairs(const Ring& ring, const std::vector<std::int32_t>& leading_monomials,
+                               const BuchbergerParams& params);
+
 // Whether `basis` (primitive integer polynomials) is a Gröbner basis of an ideal
 // containing `generators`, checked exactly; the checks are shared among `threads`
-// threads and the first that fails stops them all. Budget stops name "the proof
-// over Q".
+// threads and the first that fails stops them all. `pairs`, when given, must be
+// proof_pairs of the basis's leading monomials. Budget stops name "the proof over Q".
 ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynomial>& generators,
                                   const std::vector<IntPolynomial>& basis, const BuchbergerParams& params,
-                                  std::size_t threads, ProofRows rows = ProofRows::by_coefficient_size);
+                                  std::size_t threads, ProofRows rows = ProofRows::by_coefficient_size,
+                                  const std::vector<SPair>* pairs = nullptr);
 
 }  // namespace implicitizer::detail
