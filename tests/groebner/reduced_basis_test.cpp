@@ -62,7 +62,7 @@ std::vector<Polynomial> spoiled_basis(const std::vector<Polynomial>& reduced, st
 }
 
 // Property: for random ideals in every order, reduce_basis() of a spoiled basis is
-// the reduced basis itself; is_groebner accepts the spoiled basis and is_reduced
+// the reduced basis itself, on one thread or several; is_groebner accepts the spoiled basis and is_reduced
 // rejects it.
 TEST(ReducedBasisTest, SpoiledBasisReducesToTheReducedBasis) {
   std::mt19937 rng(kSeed);
@@ -79,6 +79,8 @@ TEST(ReducedBasisTest, SpoiledBasisReducesToTheReducedBasis) {
       EXPECT_FALSE(is_reduced(spoiled));
       const std::vector<Polynomial> again = reduce_basis(spoiled);
       EXPECT_EQ(print_all(again), print_all(reduced));
+      // The tails shared among threads: the same basis.
+      EXPECT_EQ(print_all(reduce_basis(spoiled, Budget(), 3)), print_all(reduced));
       EXPECT_TRUE(is_reduced(again));
       // Idempotent.
       EXPECT_EQ(reduce_basis(again), again);

@@ -44,6 +44,11 @@ constexpr std::size_t kFirstAudit = 16;
 // A prime is worth a thread of its own when it takes longer than this.
 constexpr double kThreadWorthMs = 20;
 
+// A basis over ℚ of this many terms is worth interreducing on several threads
+// (docs/algorithms.md, item 4 of the multi-modular route, has what cyclic-7's took):
+// below it, starting a thread may cost more than the work.
+constexpr std::size_t kThreadWorthTerms = 5'000;
+
 // ---------------------------------------------------------------- the runs modulo p
 
 // What is lifted of each prime's reduced basis. By default the basis itself. With
@@ -678,7 +683,10 @@ GroebnerResult compute_groebner_basis_modular(std::span<const Polynomial> genera
     const Stopwatch dehomogenize_timer;
     std::vector<Polynomial> affine;
     for (const auto& g : basis) affine.push_back(dehomogenize(g, ring));
-    basis = reduce_basis(affine, params.buchberger.budget);
+    // On the route's threads once the basis is large enough to be worth starting one.
+    std::size_t terms = 0;
+    for (const auto& g : affine) terms += g.num_terms();
+    basis = reduce_basis(affine, params.buchberger.budget, terms >= kThreadWorthTerms ? stats.threads : 1);
     stats.dehomogenize_ms = dehomogenize_timer.elapsed_ms();
   }
   result.basis = std::move(basis);

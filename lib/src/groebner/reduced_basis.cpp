@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "implicitizer/modular/one_per_thread.hpp"
 #include "int_polynomial.hpp"
 
 namespace implicitizer {
@@ -12,14 +13,16 @@ std::vector<detail::Reducer> reducers_of(const Ring& ring, const std::vector<det
                                          std::size_t skip) {
   std::vector<detail::Reducer> out;
   for (std::size_t i = 0; i < ps.size(); ++i) {
-    if (i != skip && !ps[i].empty()) out.push_back(detail::Reducer{&ps[i], ring.divisor_mask(ps[i].monomials.data()), 0});
+    if (i != skip && !ps[i].empty())
+      out.push_back(detail::Reducer{&ps[i], ring.divisor_mask(ps[i].monomials.data()), 0});
   }
   return out;
 }
 
 }  // namespace
 
-std::vector<Polynomial> reduce_basis(std::span<const Polynomial> groebner_basis, const Budget& budget) {
+std::vector<Polynomial> reduce_basis(std::span<const Polynomial> groebner_basis, const Budget& budget,
+                                     std::size_t threads) {
   if (groebner_basis.empty()) return {};
   const RingPtr ring = groebner_basis.front().ring();
   std::vector<const Polynomial*> sorted;
@@ -41,14 +44,16 @@ std::vector<Polynomial> reduce_basis(std::span<const Polynomial> groebner_basis,
   // Interreduce: each element's tail reduced by the others. Its leading term cannot
   // be reduced (the basis is minimal), and the result is the unique reduced element
   // with that leading monomial, whatever the order of the work.
-  std::vector<Polynomial> reduced;
-  reduced.reserve(minimal.size());
-  detail::ReductionCounters counters;
-  for (std::size_t i = 0; i < minimal.size(); ++i) {
-    const auto reducers = reducers_of(*ring, minimal, i);
-    detail::IntPolynomial r = detail::reduce(*ring, minimal[i], reducers, true, budget, counters);
-    reduced.push_back(detail::to_monic_polynomial(ring, r));
-  }
+  std::vector<Polynomial> reduced(minimal.size(), Polynomial(ring));
+  threads = std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(minimal.size(), 1));
+  run_one_per_thread(threads, [&](std::size_t t) {
+    detail::ReductionCounters counters;
+    for (std::size_t i = t; i < minimal.size(); i += threads) {
+      const auto reducers = reducers_of(*ring, minimal, i);
+      detail::IntPolynomial r = detail::reduce(*ring, minimal[i], reducers, true, budget, counters);
+      reduced[i] = detail::to_monic_polynomial(ring, r);
+    }
+  });
   return reduced;
 }
 
