@@ -17,8 +17,8 @@ constexpr const char* kWhere = "F4 matrix reduction";
 constexpr std::size_t kRowsPerCheck = 8;
 
 // Rows to reduce times columns from which a matrix's rows are shared among threads:
-// on cyclic-7 such a matrix takes a few milliseconds on one thread, against the tens
-// of microseconds that starting a thread costs on an idle machine.
+// below it the work is too short for starting a thread to pay (docs/algorithms.md,
+// "F4 modulo primes", item 3).
 constexpr std::size_t kConcurrentCells = 60'000;
 
 // Reduces the accumulator, loaded with `row`, from column `start` on: every column

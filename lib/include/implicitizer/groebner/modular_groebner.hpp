@@ -91,7 +91,7 @@ struct ModularGroebnerStats {
   std::size_t primes = 0;           ///< primes whose reduced basis was computed
   std::size_t lifted_primes = 0;    ///< of which lifted (their leading monomials were the majority's)
   std::size_t unlucky_primes = 0;   ///< dropped: other leading monomials than the majority's
-  std::size_t checking_primes = 0;  ///< the last batch, computed only to confirm the candidate
+  std::size_t checking_primes = 0;  ///< the primes that confirmed the candidate, not lifted into it
   /// The random primes the returned candidate was checked on (`random_checks`; empty
   /// with the proof): the answer's whole guarantee when it is not proven.
   std::vector<std::uint64_t> random_primes;
