@@ -44,7 +44,7 @@ class InterreductionPlan {
                                                            std::vector<ModPolynomial>, const Budget&,
                                                            const InterreductionPlan*, InterreductionPlan*);
   std::vector<std::int32_t> supports_;     // the minimal basis's monomials, element after element
-  std::vector<std::size_t> support_ends_;  // where each element's end in supports_ (in words)
+  std::vector<std::size_t> support_ends_;  // where each element ends in supports_ (in words)
   std::vector<MatrixRow> rows_;            // without coefficients
   std::vector<std::int64_t> pivot_;        // per column: its pivot's index in rows_, or −1
   std::vector<std::size_t> element_rows_;  // per element of the minimal basis, its row
