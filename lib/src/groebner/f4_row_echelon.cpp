@@ -73,6 +73,18 @@ std::uint64_t eliminate_dense(std::vector<std::uint64_t>& acc, const MatrixRow& 
   return terms;
 }
 
+// `row` loaded into the zero accumulator and eliminated from its leading column on
+// (eliminate_dense, the delayed form for primes below 2^31); the work, as
+// Budget::charge_work counts it.
+std::uint64_t reduce_row(std::vector<std::uint64_t>& acc, const MatrixRow& row,
+                         const std::vector<const MatrixRow*>& pivot, const nmod_t& modulus, MatrixRow& out) {
+  for (std::size_t i = 0; i < row.size(); ++i) acc[row.columns[i]] = row.coefficients[i];
+  const std::uint64_t terms = modulus.n < (std::uint64_t{1} << 31)
+                                  ? eliminate_dense<true>(acc, row, row.lead(), pivot, modulus, out)
+                                  : eliminate_dense<false>(acc, row, row.lead(), pivot, modulus, out);
+  return kWorkPerStep + kWorkPerModularTerm * (terms + row.size());
+}
+
 void make_monic(MatrixRow& row, const nmod_t& modulus) {
   const std::uint64_t inverse = nmod_inv(row.owned.front(), modulus);
   for (auto& c : row.owned) c = nmod_mul(c, inverse, modulus);
@@ -90,18 +102,13 @@ std::vector<MatrixRow> reduce_by_pivots(const MacaulayMatrix& matrix, const std:
   std::vector<std::uint64_t> work_per_thread(threads, 0);
   std::atomic<std::size_t> next = 0;
   std::atomic<bool> stop = false;
-  const bool delayed = modulus.n < (std::uint64_t{1} << 31);
   run_one_per_thread(threads, [&](std::size_t t) {
     std::vector<std::uint64_t> acc(matrix.columns, 0);
     try {
       for (std::size_t k; !stop.load(std::memory_order_relaxed) && (k = next.fetch_add(1)) < partial.size();) {
         if (k % kRowsPerCheck == 0) budget.check(kWhere);
         if (t == 0) budget.report_step(kWhere, k, partial.size());
-        const MatrixRow& row = matrix.to_reduce[k];
-        for (std::size_t i = 0; i < row.size(); ++i) acc[row.columns[i]] = row.coefficients[i];
-        const std::uint64_t terms = delayed ? eliminate_dense<true>(acc, row, row.lead(), pivot, modulus, partial[k])
-                                            : eliminate_dense<false>(acc, row, row.lead(), pivot, modulus, partial[k]);
-        const std::uint64_t row_work = kWorkPerStep + kWorkPerModularTerm * (terms + row.size());
+        const std::uint64_t row_work = reduce_row(acc, matrix.to_reduce[k], pivot, modulus, partial[k]);
         work_per_thread[t] += row_work;
         budget.charge_work(row_work, kWhere);
         partial[k].coefficients = partial[k].owned.data();
@@ -136,7 +143,6 @@ EchelonResult reduce_to_row_echelon(const MacaulayMatrix& matrix, const nmod_t& 
   if (concurrent) partial = reduce_by_pivots(matrix, pivot, modulus, budget, threads, result.work);
   const std::vector<MatrixRow>& rows = concurrent ? partial : matrix.to_reduce;
   std::vector<std::uint64_t> acc(matrix.columns, 0);
-  const bool delayed = modulus.n < (std::uint64_t{1} << 31);
   for (std::size_t k = 0; k < rows.size(); ++k) {
     if (k % kRowsPerCheck == 0) {
       budget.check(kWhere);
@@ -144,11 +150,8 @@ EchelonResult reduce_to_row_echelon(const MacaulayMatrix& matrix, const nmod_t& 
     }
     const MatrixRow& row = rows[k];
     if (row.columns.empty()) continue;  // reduced to zero by the pivots
-    for (std::size_t i = 0; i < row.size(); ++i) acc[row.columns[i]] = row.coefficients[i];
     MatrixRow out;
-    const std::uint64_t terms = delayed ? eliminate_dense<true>(acc, row, row.lead(), pivot, modulus, out)
-                                        : eliminate_dense<false>(acc, row, row.lead(), pivot, modulus, out);
-    const std::uint64_t work = kWorkPerStep + kWorkPerModularTerm * (terms + row.size());
+    const std::uint64_t work = reduce_row(acc, row, pivot, modulus, out);
     result.work += work;
     budget.charge_work(work, kWhere);
     if (out.columns.empty()) continue;

@@ -9,7 +9,7 @@
 namespace implicitizer {
 
 CrtLift::CrtLift(std::size_t size, CrtLiftParams params)
-    : params_(params), residues_(size), values_(size), known_(size, 0), confirmed_(size, 0), current_(size, 1) {
+    : params_(params), residues_(size), values_(size), known_(size, 0), confirmed_(size, 0) {
   if (params_.shared_denominator && params_.margin_bits == 0) {
     throw std::invalid_argument("CrtLift: a shared denominator needs a margin");
   }
@@ -48,7 +48,6 @@ bool CrtLift::add(std::span<const mp_limb_t> residues, mp_limb_t p) {
       if (confirmed_[i]) {
         // The value stands for the integer (check_values brings it back if p refutes
         // the value); the integer of an integral value is the value itself.
-        current_[i] = 0;
         changed = changed || !fmpz_is_one(fmpq_denref(values_[i].get()));
         continue;
       }
@@ -84,9 +83,9 @@ void CrtLift::check_values(std::span<const mp_limb_t> residues, mp_limb_t p) {
       fmpz_lcm(denominator_.get(), denominator_.get(), fmpq_denref(v));
     }
     if (!agrees) {
-      // Every prime since the integer was last kept agreed with the value.
-      if (!current_[i]) value_modulo(i, residues_[i].get());
-      current_[i] = 1;
+      // Every prime since the value was confirmed agreed with it, and none was folded
+      // into the integer: the integer is the value's.
+      if (confirmed_[i]) value_modulo(i, residues_[i].get());
       known_[i] = confirmed_[i] = 0;
     }
   }
@@ -96,7 +95,7 @@ void CrtLift::spread(std::span<const std::size_t> positions, std::size_t new_siz
   if (positions.size() != residues_.size()) throw std::invalid_argument("CrtLift::spread: one position per entry");
   std::vector<Fmpz> residues(new_size);
   std::vector<Fmpq> values(new_size);
-  std::vector<char> known(new_size, 0), confirmed(new_size, 0), current(new_size, 1);
+  std::vector<char> known(new_size, 0), confirmed(new_size, 0);
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const std::size_t to = positions[i];
     if (to >= new_size || (i > 0 && to <= positions[i - 1])) {
@@ -106,13 +105,11 @@ void CrtLift::spread(std::span<const std::size_t> positions, std::size_t new_siz
     values[to] = std::move(values_[i]);
     known[to] = known_[i];
     confirmed[to] = confirmed_[i];
-    current[to] = current_[i];
   }
   residues_ = std::move(residues);
   values_ = std::move(values);
   known_ = std::move(known);
   confirmed_ = std::move(confirmed);
-  current_ = std::move(current);
 }
 
 void CrtLift::value_modulo(std::size_t i, fmpz_t out) const {
@@ -126,7 +123,7 @@ void CrtLift::value_modulo(std::size_t i, fmpz_t out) const {
 
 Integer CrtLift::integer(std::size_t i) const {
   Integer out;
-  if (current_[i]) {
+  if (!confirmed_[i]) {
     fmpz_get_mpz(out.get_mpz_t(), residues_[i].get());
   } else {
     Fmpz x;

@@ -107,8 +107,8 @@ class CrtLift {
   std::vector<Fmpz> residues_;  // symmetric, in (−M/2, M/2]
   std::vector<Fmpq> values_;
   std::vector<char> known_;      // values_[i] holds a value
-  std::vector<char> confirmed_;  // ... that a later prime agreed with
-  std::vector<char> current_;    // residues_[i] is the integer (else the value stands for it)
+  std::vector<char> confirmed_;  // ... that a later prime agreed with: it stands for residues_[i],
+                                 // which no prime is folded into from then on
   std::size_t primes_ = 0;
   Fmpz modulus_;      // M
   Fmpz denominator_;  // L: the lcm of the confirmed values' denominators
