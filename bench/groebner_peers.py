@@ -17,12 +17,17 @@ README), run with one thread; "giac-certified" is bench/peers/giac_gbasis_certif
 (built the same way), Giac told to prove its basis (proba_epsilon:=0), the like of
 ours, which is always proven; Singular runs `std` with redSB and redTail; Macaulay2
 `gb`. A run past --timeout prints "> T". The ideals are ../shared/bench/gb/ideals.json.
-Prints a Markdown table (docs/benchmarks.md records it with the command).
+With --rounds R, each ideal runs R times, every column once a round one after the
+other (so that a machine whose speed drifts slows them alike), and a cell is the
+median of its R times with their range; the notes give, per round, each ours column's
+time over Giac's, and the medians of our phases. Prints a Markdown table
+(docs/benchmarks.md records it with the command).
 """
 
 import argparse
 import json
 import os
+import statistics
 import subprocess
 import tempfile
 import time
@@ -63,7 +68,8 @@ def ours(binary, ideal, method, timeout):
         detail += ": %d primes (%d replayed), modular %.2f s, lift %.2f s, proof %.2f s" % (
             modular.get("primes", 0), modular.get("replayed_primes", 0), modular.get("modular_ms", 0) / 1000,
             modular.get("lift_ms", 0) / 1000, modular.get("verify_ms", 0) / 1000)
-    return seconds, detail
+    phases = [modular.get(k, 0) / 1000 for k in ("modular_ms", "lift_ms", "verify_ms")] if modular else None
+    return seconds, detail, phases
 
 
 def giac(binary, ideal, timeout):
@@ -96,6 +102,44 @@ def show(seconds, timeout):
     return "> %g s" % timeout if seconds is None else "%.2f s" % seconds
 
 
+def run_peer(peer, args, ideal):
+    if peer == "giac":
+        return giac(args.giac, ideal, args.timeout)
+    if peer == "giac-certified":
+        return giac(args.giac_certified, ideal, args.timeout)
+    if peer == "singular":
+        return singular(ideal, args.timeout)
+    return macaulay2(ideal, args.timeout)
+
+
+def summary(times, timeout):
+    """One run's time, or the median of several with their range."""
+    if len(times) == 1:
+        return show(times[0], timeout)
+    if any(t is None for t in times):
+        return "%d of %d past %g s" % (sum(t is None for t in times), len(times), timeout)
+    return "%.2f s (%.2f–%.2f)" % (statistics.median(times), min(times), max(times))
+
+
+def round_notes(name, columns, times, phases, before):
+    """Per round, each of our columns over Giac's time; the medians of our phases."""
+    notes = []
+    giac_column = next((c for c, col in enumerate(columns) if col[:2] == ("peer", "giac")), None)
+    for c, (kind, what, binary) in enumerate(columns):
+        if kind != "ours":
+            continue
+        label = "ours (%s%s)" % (what, ", before" if binary == before else "")
+        if giac_column is not None and None not in times[c] and None not in times[giac_column]:
+            ratios = [t / g for t, g in zip(times[c], times[giac_column])]
+            notes.append("%s, %s / giac per round: %s; ratio of the medians %.2f" % (
+                name, label, ", ".join("%.2f" % r for r in ratios),
+                statistics.median(times[c]) / statistics.median(times[giac_column])))
+        if phases[c]:
+            medians = [statistics.median(p[k] for p in phases[c]) for k in range(3)]
+            notes.append("%s, %s: medians of modular %.3f s, lift %.3f s, proof %.3f s" % ((name, label) + tuple(medians)))
+    return notes
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--ideals", default="cyclic5,cyclic6,cyclic7,katsura5,katsura6,katsura7,katsura8")
@@ -106,6 +150,7 @@ def main():
     parser.add_argument("--bin", default=os.path.join(ROOT, "build", "bin", "implicitizer"))
     parser.add_argument("--peers", default="giac,singular,m2")
     parser.add_argument("--before", default="")
+    parser.add_argument("--rounds", type=int, default=1)
     args = parser.parse_args()
     with open(IDEALS) as f:
         ideals = {i["name"]: i for i in json.load(f)}
@@ -118,23 +163,26 @@ def main():
     notes = []
     for name in args.ideals.split(","):
         ideal = ideals[name]
-        cells = []
-        for method, binary in ours_columns:
-            seconds, detail = ours(binary, ideal, method, args.timeout)
-            cells.append(show(seconds, args.timeout))
-            notes.append("%s, ours (%s%s): %s" % (name, method, ", before" if binary == args.before else "", detail))
-        for peer in peers:
-            if peer == "giac":
-                seconds, detail = giac(args.giac, ideal, args.timeout)
-            elif peer == "giac-certified":
-                seconds, detail = giac(args.giac_certified, ideal, args.timeout)
-            elif peer == "singular":
-                seconds, detail = singular(ideal, args.timeout)
-            else:
-                seconds, detail = macaulay2(ideal, args.timeout)
-            cells.append(show(seconds, args.timeout))
-            notes.append("%s, %s: %s" % (name, peer, detail))
+        columns = [("ours", method, binary) for method, binary in ours_columns] + [("peer", p, None) for p in peers]
+        times = [[] for _ in columns]  # per column, per round (None past the timeout)
+        phases = [[] for _ in columns]
+        for _ in range(args.rounds):
+            for c, (kind, what, binary) in enumerate(columns):
+                if kind == "ours":
+                    seconds, detail, phase = ours(binary, ideal, what, args.timeout)
+                    label = "ours (%s%s)" % (what, ", before" if binary == args.before else "")
+                    if phase:
+                        phases[c].append(phase)
+                else:
+                    seconds, detail = run_peer(what, args, ideal)
+                    label = what
+                times[c].append(seconds)
+                if args.rounds == 1:
+                    notes.append("%s, %s: %s" % (name, label, detail))
+        cells = [summary(t, args.timeout) for t in times]
         print("| %s | %s |" % (name, " | ".join(cells)), flush=True)
+        if args.rounds > 1:
+            notes.extend(round_notes(name, columns, times, phases, args.before))
     print()
     for n in notes:
         print("- " + n)

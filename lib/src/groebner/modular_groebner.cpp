@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <deque>
 #include <future>
 #include <map>
 #include <memory>
@@ -24,6 +25,7 @@
 #include "int_polynomial.hpp"
 #include "mod_polynomial.hpp"
 #include "rational_proof.hpp"
+#include "trace_followers.hpp"
 
 namespace implicitizer {
 
@@ -43,6 +45,13 @@ constexpr std::size_t kFirstAudit = 16;
 
 // A prime is worth a thread of its own when it takes longer than this.
 constexpr double kThreadWorthMs = 20;
+
+// The primes a follower may replay behind the learning run (trace_followers.hpp).
+// The learning run took as long as about ten replays' F4 steps on cyclic-7 and
+// katsura-8, which need ten primes besides it (docs/algorithms.md, "F4 modulo
+// primes"); a prime more than the lift needs costs its replay's last steps and
+// interreduction after the learning run.
+constexpr std::size_t kFollowedPrimes = 8;
 
 // A basis over ℚ of this many terms is worth interreducing on several threads
 // (docs/algorithms.md, item 4 of the multi-modular route, has what cyclic-7's took):
@@ -105,34 +114,45 @@ ModPolynomial dehomogenize_modulo(const ModPolynomial& f, const Ring& from, cons
   return out;
 }
 
-// The reduced basis modulo `prime`: by replaying `trace` when there is one, recording
-// into `learn` when asked (F4 only); a run in full shares F4's echelon steps among
+// The generators modulo p, monic, or nullopt when p divides a leading coefficient.
+std::optional<std::vector<ModPolynomial>> generators_modulo(const std::vector<IntPolynomial>& generators,
+                                                            const detail::ModularArithmetic& arithmetic) {
+  std::vector<ModPolynomial> reduced;
+  for (const auto& g : generators) {
+    if (mpz_fdiv_ui(g.coefficients.front().get_mpz_t(), arithmetic.prime()) == 0) return std::nullopt;
+    reduced.push_back(arithmetic.reduce_coefficients(g));
+  }
+  return reduced;
+}
+
+// The reduced basis modulo `prime`: by replaying `trace` when there is one (going on
+// with `begun` when a follower began the replay, trace_followers.hpp), recording into
+// `learn` when asked (F4 only); a run in full shares F4's echelon steps among
 // `threads` threads.
 PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generators, std::uint64_t prime,
                    const ModularGroebnerParams& params, const Projection& projection, const detail::F4Trace* trace,
-                   detail::F4Trace* learn, std::size_t threads) {
+                   detail::F4Trace* learn, std::size_t threads, detail::F4Trace::Replay* begun = nullptr) {
   PrimeRun run;
   run.prime = prime;
   const detail::ModularArithmetic arithmetic(ring, prime);
-  std::vector<ModPolynomial> reduced;
-  for (const auto& g : generators) {
-    if (mpz_fdiv_ui(g.coefficients.front().get_mpz_t(), prime) == 0) {
-      run.bad = true;
-      return run;
-    }
-    reduced.push_back(arithmetic.reduce_coefficients(g));
+  std::optional<std::vector<ModPolynomial>> reduced = generators_modulo(generators, arithmetic);
+  if (!reduced) {
+    run.bad = true;
+    return run;
   }
   std::optional<detail::F4Outcome> replayed;
   if (trace != nullptr) {
-    replayed = trace->replay(ring, arithmetic, reduced, params.buchberger.budget, run.stats);
+    const Budget& budget = params.buchberger.budget;
+    replayed = begun != nullptr ? trace->replay(ring, *begun, budget, run.stats)
+                                : trace->replay(ring, arithmetic, *reduced, budget, run.stats);
     run.replayed = replayed.has_value();
     run.replay_failed = !run.replayed;
   }
   detail::F4Outcome outcome =
       replayed ? std::move(*replayed)
       : learn != nullptr
-          ? detail::run_f4(ring, arithmetic, std::move(reduced), params.buchberger, run.stats, learn, threads)
-          : detail::run_modular_algorithm(ring, arithmetic, std::move(reduced), params.algorithm, params.buchberger,
+          ? detail::run_f4(ring, arithmetic, std::move(*reduced), params.buchberger, run.stats, learn, threads)
+          : detail::run_modular_algorithm(ring, arithmetic, std::move(*reduced), params.algorithm, params.buchberger,
                                           run.stats, threads);
   const Ring& lift_ring = projection.affine != nullptr ? *projection.affine : ring;
   // The final interreduction is part of the path: recorded by the learning prime,
@@ -389,7 +409,7 @@ class ModularDriver {
       const bool replay = !rejected && !audit && (!candidate || (params_.prove && has_learned_leads(*candidate)));
       // The labelled unproven answer is checked on random primes (the header says why).
       const bool random = candidate && !params_.prove && params_.random_checks > 0;
-      const std::vector<PrimeRun> batch = next_batch(replay, random);
+      std::vector<PrimeRun> batch = next_batch(replay, random);
       rejected = false;
       if (trace_ != nullptr && leaves_trace(batch)) {
         drop_trace();
@@ -402,9 +422,9 @@ class ModularDriver {
         reject(candidate, rejected);
       }
       const Stopwatch timer;
-      std::vector<const PrimeRun*> trusted;  // replays of a dropped trace are not
-      for (const PrimeRun* run : runs) {
-        if (!run->replayed || trace_ != nullptr) trusted.push_back(run);
+      std::vector<PrimeRun*> trusted;  // replays of a dropped trace are not
+      for (PrimeRun& run : batch) {
+        if (!run.replayed || trace_ != nullptr) trusted.push_back(&run);
       }
       // With the proof, the batch's last prime joins the lift after the
       // reconstruction: the candidate was not lifted from it, so it confirms the
@@ -412,8 +432,13 @@ class ModularDriver {
       // batch is saved (with one prime a batch, the reconstruction only comes one
       // prime later, where the checking prime would have come).
       const PrimeRun* held = params_.prove && !trusted.empty() ? trusted.back() : nullptr;
-      for (const PrimeRun* run : trusted) {
-        if (run != held) absorb(*run);
+      for (PrimeRun* run : trusted) {
+        if (run == held) continue;
+        absorb(*run);
+        // Lifted, its basis is not needed: freed at once, its memory serves the lift's
+        // next allocations (freed with the batch, a first batch of several primes
+        // made the lift's first steps slower, docs/algorithms.md, "F4 modulo primes").
+        std::vector<ModPolynomial>().swap(run->basis);
       }
       BasisLift* majority = majority_lift();
       // Reconstruction costs about as much as one prime's Chinese remaindering of the
@@ -497,20 +522,24 @@ class ModularDriver {
       }
       std::vector<std::uint64_t> primes;
       if (random && !random_primes_) random_primes_.emplace();  // seeded only when needed
-      for (std::size_t i = batch.size(); i < wanted; ++i)
-        primes.push_back(random ? random_primes_->next() : primes_.next());
+      for (std::size_t i = batch.size(); i < wanted; ++i) primes.push_back(random ? random_primes_->next() : next_prime());
       // The first prime run with F4 (one, on this thread) records its path.
       const bool learning = params_.trace && params_.algorithm == ModularAlgorithm::f4 && !stats_.trace_dropped &&
                             trace_ == nullptr && primes.size() == 1;
       auto learned = learning ? std::make_unique<detail::F4Trace>() : nullptr;
-      // A prime run alone (the first, or each while a prime is not worth a thread)
-      // shares its matrices' echelon steps among the threads.
-      const std::size_t echelon_threads = primes.size() == 1 ? threads_ : 1;
-      std::vector<PrimeRun> runs(primes.size());
-      run_one_per_thread(primes.size(), [&](std::size_t k) {
-        runs[k] = run_prime(*run_ring_, generators_, primes[k], params_, projection_, replay ? trace_.get() : nullptr,
-                            learned.get(), echelon_threads);
-      });
+      std::vector<PrimeRun> runs;
+      if (learning) {
+        runs = learn(primes.front(), *learned, timer);
+      } else {
+        // A prime run alone (each while a prime is not worth a thread) shares its
+        // matrices' echelon steps among the threads.
+        const std::size_t echelon_threads = primes.size() == 1 ? threads_ : 1;
+        runs.resize(primes.size());
+        run_one_per_thread(primes.size(), [&](std::size_t k) {
+          runs[k] = run_prime(*run_ring_, generators_, primes[k], params_, projection_,
+                              replay ? trace_.get() : nullptr, nullptr, echelon_threads);
+        });
+      }
       for (auto& r : runs) {
         if (r.bad) {
           ++stats_.bad_primes;
@@ -534,6 +563,68 @@ class ModularDriver {
     if (stats_.primes == batch.size() && ms > kThreadWorthMs) batch_size_ = threads_;
     stats_.modular_ms += ms;
     return batch;
+  }
+
+  // The first prime's F4 run, recording its path into `learned` (on this thread, its
+  // large matrices shared among the threads), then the primes a follower replayed
+  // behind it (trace_followers.hpp), started once the run has taken long enough to be
+  // worth a thread: the learning run first, the followed primes in their order.
+  std::vector<PrimeRun> learn(std::uint64_t prime, detail::F4Trace& learned, const Stopwatch& timer) {
+    std::optional<detail::TraceFollowers> followers;
+    if (threads_ > 1) {
+      learned.set_after_step([&] {
+        if (followers || timer.elapsed_ms() < kThreadWorthMs) return;
+        std::vector<std::uint64_t> primes;
+        for (std::size_t i = 0; i < kFollowedPrimes; ++i) primes.push_back(next_prime());
+        followers.emplace(
+            *run_ring_, learned, std::move(primes),
+            [this](std::uint64_t p) { return generators_modulo(generators_, detail::ModularArithmetic(*run_ring_, p)); },
+            params_.buchberger.budget);
+      });
+    }
+    std::vector<PrimeRun> runs;
+    {
+      // Closed however the run ends, so that a follower waiting for a step stops.
+      struct CloseOnExit {
+        detail::F4Trace& trace;
+        ~CloseOnExit() { trace.close(); }
+      } close{learned};
+      runs.push_back(run_prime(*run_ring_, generators_, prime, params_, projection_, nullptr, &learned, threads_));
+    }
+    if (!followers) return runs;
+    detail::TraceFollowers::Followed followed = followers->stop();
+    for (const std::uint64_t p : followed.bad) {
+      PrimeRun bad;
+      bad.prime = p;
+      bad.bad = true;
+      runs.push_back(std::move(bad));
+    }
+    std::vector<std::uint64_t> unused;  // back to the sequence, in order
+    if (!learned.complete()) {
+      for (const detail::F4Trace::Replay& r : followed.replays) unused.push_back(r.prime());
+      followed.replays.clear();
+    }
+    unused.insert(unused.end(), followed.untaken.begin(), followed.untaken.end());
+    pending_primes_.insert(pending_primes_.begin(), unused.begin(), unused.end());
+    // What the follower left of each replay, on every thread, whichever is free.
+    std::vector<PrimeRun> finished(followed.replays.size());
+    std::atomic<std::size_t> next = 0;
+    run_one_per_thread(std::min(threads_, finished.size()), [&](std::size_t) {
+      for (std::size_t i; (i = next.fetch_add(1)) < finished.size();) {
+        detail::F4Trace::Replay& r = followed.replays[i];
+        finished[i] = run_prime(*run_ring_, generators_, r.prime(), params_, projection_, &learned, nullptr, 1, &r);
+      }
+    });
+    for (PrimeRun& r : finished) runs.push_back(std::move(r));
+    return runs;
+  }
+
+  // The next prime of the sequence: first those drawn for followers and not used.
+  std::uint64_t next_prime() {
+    if (pending_primes_.empty()) return primes_.next();
+    const std::uint64_t p = pending_primes_.front();
+    pending_primes_.pop_front();
+    return p;
   }
 
   // The proof's pairs depend only on the candidate's leading monomials, which the
@@ -627,6 +718,7 @@ class ModularDriver {
   Projection projection_;
   ModularGroebnerStats& stats_;
   PrimeSequence primes_;
+  std::deque<std::uint64_t> pending_primes_;  // drawn for followers, not used: next_prime() takes them first
   std::optional<RandomPrimes> random_primes_;
   std::size_t threads_ = 1;
   std::size_t batch_size_ = 1;            // primes per batch after the first (threads_ once a prime is worth a thread)
