@@ -185,21 +185,15 @@ PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generator
   return run;
 }
 
-// The leading monomials of a reduced basis, concatenated: the key that tells lucky
-// primes from unlucky ones (Arnold 2003: for all but finitely many primes the
-// reduced basis modulo p has the leading monomials of the rational one).
-std::vector<std::int32_t> leading_key(const Ring& ring, const std::vector<ModPolynomial>& basis) {
+// The leading monomials of a reduced basis modulo p, or of a lifted candidate,
+// concatenated: the key that tells lucky primes from unlucky ones (Arnold 2003: for
+// all but finitely many primes the reduced basis modulo p has the leading monomials
+// of the rational one).
+template <class P>
+std::vector<std::int32_t> leading_key(const Ring& ring, const std::vector<P>& basis) {
   const std::size_t w = ring.monomial_size();
   std::vector<std::int32_t> key;
   for (const auto& g : basis) key.insert(key.end(), g.monomials.begin(), g.monomials.begin() + static_cast<long>(w));
-  return key;
-}
-
-// The same key of a lifted candidate (its monomials are packed as the primes' are).
-std::vector<std::int32_t> leading_key(const Ring& ring, const std::vector<Polynomial>& candidate) {
-  const std::size_t w = ring.monomial_size();
-  std::vector<std::int32_t> key;
-  for (const auto& g : candidate) key.insert(key.end(), g.leading_monomial(), g.leading_monomial() + w);
   return key;
 }
 
@@ -270,39 +264,34 @@ class BasisLift {
     ++primes_;
   }
 
-  // Rational reconstruction of every coefficient; the candidate basis, or nullopt
-  // when a coefficient has none (each thread stops at its first failure, and at the
-  // next element once another thread failed).
-  std::optional<std::vector<Polynomial>> reconstruct(const RingPtr& ring, std::size_t threads) {
-    std::vector<std::vector<Integer>> values(elements_.size());
+  // Rational reconstruction of every coefficient; the candidate basis as primitive
+  // integer polynomials (the reconstructed values times their common denominator,
+  // divided by their gcd), or nullopt when a coefficient has none (each thread stops
+  // at its first failure, and at the next element once another thread failed).
+  std::optional<std::vector<IntPolynomial>> reconstruct(std::size_t threads) {
+    std::vector<IntPolynomial> out(elements_.size());
     std::atomic<bool> failed = false;
     threads = std::max<std::size_t>(threads, 1);
+    const std::size_t w = ring_.monomial_size();
     run_one_per_thread(std::min(threads, elements_.size()), [&](std::size_t t) {
       for (std::size_t e = t; e < elements_.size() && !failed.load(std::memory_order_relaxed); e += threads) {
+        const LiftedElement& element = elements_[e];
         if (!elements_[e].lift.reconstruct()) {
           failed = true;
           return;
         }
-        values[e] = elements_[e].lift.integer_values();
+        std::vector<Integer> values = element.lift.integer_values();
+        IntPolynomial& g = out[e];
+        for (std::size_t i = 0; i < values.size(); ++i) {
+          if (values[i] == 0) continue;
+          g.coefficients.push_back(std::move(values[i]));
+          g.monomials.insert(g.monomials.end(), element.monomials.begin() + static_cast<long>(i * w),
+                             element.monomials.begin() + static_cast<long>((i + 1) * w));
+        }
+        detail::make_primitive(g);
       }
     });
     if (failed) return std::nullopt;
-    const std::size_t w = ring_.monomial_size();
-    std::vector<Polynomial> out;
-    for (std::size_t e = 0; e < elements_.size(); ++e) {
-      const LiftedElement& element = elements_[e];
-      std::vector<Integer> coefficients;
-      std::vector<std::int32_t> monomials;
-      for (std::size_t i = 0; i < values[e].size(); ++i) {
-        if (values[e][i] == 0) continue;
-        coefficients.push_back(std::move(values[e][i]));
-        monomials.insert(monomials.end(), element.monomials.begin() + static_cast<long>(i * w),
-                         element.monomials.begin() + static_cast<long>((i + 1) * w));
-      }
-      out.push_back(Polynomial::from_terms(ring,
-                                           to_rational(Integer(1)) / to_rational(element.lift.common_denominator()),
-                                           std::move(coefficients), std::move(monomials)));
-    }
     return out;
   }
 
@@ -354,15 +343,14 @@ RingPtr homogenized_ring(const Ring& ring) {
 }
 
 // p with h = 1, in `ring` (h is the last variable of p's ring).
-Polynomial dehomogenize(const Polynomial& p, const RingPtr& ring) {
-  const std::size_t w = ring->monomial_size();
-  std::vector<Integer> coefficients(p.integer_coefficients());
-  std::vector<std::int32_t> monomials(p.num_terms() * w);
-  for (std::size_t i = 0; i < p.num_terms(); ++i) {
-    const std::int32_t* e = p.ring()->exponents(p.monomial(i));
-    ring->encode(e, monomials.data() + i * w);
-  }
-  return Polynomial::from_terms(ring, p.content(), std::move(coefficients), std::move(monomials));
+Polynomial dehomogenize(const IntPolynomial& p, const Ring& from, const RingPtr& ring) {
+  const std::size_t wf = from.monomial_size(), w = ring->monomial_size();
+  std::vector<std::int32_t> monomials(p.size() * w);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    ring->encode(from.exponents(p.monomials.data() + i * wf), monomials.data() + i * w);
+  // Monic: >_h and the original order rank the terms of a homogeneous p alike.
+  return Polynomial::from_terms(ring, Rational(1) / to_rational(p.coefficients.front()), p.coefficients,
+                                std::move(monomials));
 }
 
 // ---------------------------------------------------------------- the driver
@@ -385,8 +373,8 @@ class ModularDriver {
   }
 
   // The lifted basis, checked on one more prime and, with `prove`, proven.
-  std::vector<Polynomial> run() {
-    std::optional<std::vector<Polynomial>> candidate;
+  std::vector<IntPolynomial> run() {
+    std::optional<std::vector<IntPolynomial>> candidate;
     bool rejected = false;  // the last batch's candidate
     for (;;) {
       // A candidate is confirmed on further primes before the proof (with the proof,
@@ -447,7 +435,7 @@ class ModularDriver {
       // its total cost stays a constant factor of the lifting's.
       if (majority != nullptr && majority->primes() >= next_reconstruction_) {
         ++stats_.reconstructions;
-        candidate = majority->reconstruct(ring_, batch_size_);
+        candidate = majority->reconstruct(batch_size_);
         if (!candidate) next_reconstruction_ = majority->primes() + std::max<std::size_t>(1, majority->primes() / 4);
       }
       if (held != nullptr) absorb(*held);
@@ -464,7 +452,7 @@ class ModularDriver {
 
  private:
   // After a candidate was rejected: the next batch runs in full (run() says why).
-  void reject(std::optional<std::vector<Polynomial>>& candidate, bool& rejected) {
+  void reject(std::optional<std::vector<IntPolynomial>>& candidate, bool& rejected) {
     ++stats_.rejected_candidates;
     stats_.checking_primes = 0;  // they join the lift
     candidate.reset();
@@ -473,11 +461,9 @@ class ModularDriver {
 
   // Whether `candidate` is the answer: confirmed by `batch` (every prime of it when
   // `random`) and, with `prove`, proven over ℚ.
-  bool accepts(const std::vector<Polynomial>& candidate, const std::vector<const PrimeRun*>& batch, bool random) {
+  bool accepts(const std::vector<IntPolynomial>& candidate, const std::vector<const PrimeRun*>& batch, bool random) {
     const Stopwatch check_timer;
-    std::vector<IntPolynomial> integers;
-    for (const auto& g : candidate) integers.push_back(detail::to_int_polynomial(g));
-    const bool confirmed = confirms(candidate, integers, batch, random);
+    const bool confirmed = confirms(candidate, batch, random);
     stats_.lift_ms += check_timer.elapsed_ms();
     if (!confirmed) return false;
     stats_.checking_primes = batch.size();
@@ -490,7 +476,7 @@ class ModularDriver {
     std::optional<std::vector<detail::SPair>> pairs;
     if (learned_pairs_.valid() && has_learned_leads(candidate)) pairs = learned_pairs_.get();
     const detail::ProofOutcome proof =
-        detail::prove_groebner_basis(*run_ring_, generators_, integers, params_.buchberger, threads_,
+        detail::prove_groebner_basis(*run_ring_, generators_, candidate, params_.buchberger, threads_,
                                      detail::ProofRows::by_coefficient_size, pairs ? &*pairs : nullptr);
     stats_.verification_pairs += proof.pairs;
     stats_.proof_content_divisions += proof.content_divisions;
@@ -522,7 +508,8 @@ class ModularDriver {
       }
       std::vector<std::uint64_t> primes;
       if (random && !random_primes_) random_primes_.emplace();  // seeded only when needed
-      for (std::size_t i = batch.size(); i < wanted; ++i) primes.push_back(random ? random_primes_->next() : next_prime());
+      for (std::size_t i = batch.size(); i < wanted; ++i)
+        primes.push_back(random ? random_primes_->next() : next_prime());
       // The first prime run with F4 (one, on this thread) records its path.
       const bool learning = params_.trace && params_.algorithm == ModularAlgorithm::f4 && !stats_.trace_dropped &&
                             trace_ == nullptr && primes.size() == 1;
@@ -536,8 +523,8 @@ class ModularDriver {
         const std::size_t echelon_threads = primes.size() == 1 ? threads_ : 1;
         runs.resize(primes.size());
         run_one_per_thread(primes.size(), [&](std::size_t k) {
-          runs[k] = run_prime(*run_ring_, generators_, primes[k], params_, projection_,
-                              replay ? trace_.get() : nullptr, nullptr, echelon_threads);
+          runs[k] = run_prime(*run_ring_, generators_, primes[k], params_, projection_, replay ? trace_.get() : nullptr,
+                              nullptr, echelon_threads);
         });
       }
       for (auto& r : runs) {
@@ -578,7 +565,9 @@ class ModularDriver {
         for (std::size_t i = 0; i < kFollowedPrimes; ++i) primes.push_back(next_prime());
         followers.emplace(
             *run_ring_, learned, std::move(primes),
-            [this](std::uint64_t p) { return generators_modulo(generators_, detail::ModularArithmetic(*run_ring_, p)); },
+            [this](std::uint64_t p) {
+              return generators_modulo(generators_, detail::ModularArithmetic(*run_ring_, p));
+            },
             params_.buchberger.budget);
       });
     }
@@ -650,7 +639,7 @@ class ModularDriver {
 
   // Whether `candidate` has the leading monomials of the basis the trace was learned
   // from (false without a trace).
-  bool has_learned_leads(const std::vector<Polynomial>& candidate) const {
+  bool has_learned_leads(const std::vector<IntPolynomial>& candidate) const {
     return trace_ != nullptr && leading_key(*ring_, candidate) == trace_key_;
   }
 
@@ -695,13 +684,12 @@ class ModularDriver {
   // agrees with the candidate, and at least one does; with `every`, whether every
   // prime agrees (the random checks: a prime with other leading monomials may be the
   // lucky one that shows the candidate's to be wrong).
-  // `integers` is the candidate as primitive integer polynomials.
-  bool confirms(const std::vector<Polynomial>& candidate, const std::vector<IntPolynomial>& integers,
-                const std::vector<const PrimeRun*>& batch, bool every) const {
+  bool confirms(const std::vector<IntPolynomial>& candidate, const std::vector<const PrimeRun*>& batch,
+                bool every) const {
     const std::vector<std::int32_t> key = leading_key(*ring_, candidate);
     std::size_t agreeing = 0;
     for (const PrimeRun* run : batch) {
-      if (agrees_modulo(integers, *run, *ring_)) {
+      if (agrees_modulo(candidate, *run, *ring_)) {
         ++agreeing;
         continue;
       }
@@ -769,17 +757,21 @@ GroebnerResult compute_groebner_basis_modular(std::span<const Polynomial> genera
     projection.free_of_first = params.lift_only_free_of_first;
   }
   const RingPtr lift_ring = projection.affine != nullptr ? ring : work_ring;
-  std::vector<Polynomial> basis = ModularDriver(work_ring, lift_ring, std::move(work), params, projection, stats).run();
+  const std::vector<IntPolynomial> lifted =
+      ModularDriver(work_ring, lift_ring, std::move(work), params, projection, stats).run();
+  std::vector<Polynomial> basis;
   if (homogenize && params.prove) {
     // h = 1: a Gröbner basis of the original ideal, not reduced (IVA §8.4 Thm 4).
     const Stopwatch dehomogenize_timer;
     std::vector<Polynomial> affine;
-    for (const auto& g : basis) affine.push_back(dehomogenize(g, ring));
+    for (const auto& g : lifted) affine.push_back(dehomogenize(g, *work_ring, ring));
     // On the route's threads once the basis is large enough to be worth starting one.
     std::size_t terms = 0;
     for (const auto& g : affine) terms += g.num_terms();
     basis = reduce_basis(affine, params.buchberger.budget, terms >= kThreadWorthTerms ? stats.threads : 1);
     stats.dehomogenize_ms = dehomogenize_timer.elapsed_ms();
+  } else {
+    for (const auto& g : lifted) basis.push_back(detail::to_monic_polynomial(lift_ring, g));
   }
   result.basis = std::move(basis);
   result.stats = stats.last_prime;
