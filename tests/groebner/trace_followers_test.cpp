@@ -1,6 +1,6 @@
 // Replays of a trace while it is learned (lib/src/groebner/trace_followers.hpp). How
-// far the follower gets depends on the machine (it runs at the idle priority, and
-// may not run at all); what is checked does not: every prime it was given comes back
+// far the follower gets depends on the machine (on a loaded one it may not have run
+// at all); what is checked does not: every prime it was given comes back
 // replayed, bad or untaken, in order, and every replay it began gives, once finished,
 // the basis of a run in full.
 #include "trace_followers.hpp"

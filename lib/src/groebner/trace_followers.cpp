@@ -1,8 +1,5 @@
 #include "trace_followers.hpp"
 
-#include <pthread.h>
-#include <sched.h>
-
 #include <algorithm>
 
 namespace implicitizer::detail {
@@ -29,12 +26,6 @@ TraceFollowers::Followed TraceFollowers::stop() {
 }
 
 void TraceFollowers::follow() {
-  // The idle policy (Linux): the thread runs only on a core no other thread wants, and
-  // a thread that wakes up there takes the core at once (with the lowest nice value
-  // instead, the learning run's echelon threads waited for it at every large matrix).
-  // Should the call fail, the follower competes with the learning run as any thread.
-  sched_param idle{};
-  pthread_setschedparam(pthread_self(), SCHED_IDLE, &idle);
   const MemoryScope scope(account_);
   std::vector<F4Trace::Replay>& replays = followed_.replays;
   try {

@@ -11,11 +11,13 @@
 // every prime it follows has caught up, it takes the next prime, up to the primes it
 // was given.
 //
-// The follower runs at the lowest priority, so that it takes a core only when nothing
-// else wants it: the learning run's large matrices use every core, and preempt it. A
-// follower the machine never schedules costs nothing but the replays it began, which
-// the driver finishes. How far it got is a matter of timing; what the driver does
-// with it is not: each prime it hands over is finished like any replayed prime
+// The follower runs at the same priority as the learning run. Under the idle policy
+// (SCHED_IDLE), or at the lowest nice value, it should have taken a core only when
+// the learning run left one idle; on a machine otherwise idle it made no difference,
+// and on one loaded by two other busy processes the driver waited for a starved
+// follower to end its step (docs/algorithms.md, "F4 modulo primes", item 9, has the
+// measurements). How far the follower gets is a matter of timing; what the driver
+// does with it is not: each prime it hands over is finished like any replayed prime
 // (replayed to the end, or run in full when it left the path).
 
 #include <cstdint>
