@@ -3,10 +3,13 @@
 #include "implicitizer/codec/groebner_json.hpp"
 
 #include <gtest/gtest.h>
+#include <rapidjson/document.h>
 
 #include <string>
 
 #include "implicitizer/core/errors.hpp"
+#include "implicitizer/polynomial/parser.hpp"
+#include "implicitizer/polynomial/printer.hpp"
 #include "service/service_support.hpp"
 
 namespace implicitizer {
@@ -96,6 +99,26 @@ TEST(AnswerGroebnerRequest, ReducedBasisAndElimination) {
   const GroebnerAnswer b = answer_groebner_request(e);
   ASSERT_TRUE(b.elimination_ideal.has_value());
   EXPECT_NE(encode_groebner_response(b).find(R"("elimination_ideal":["x^2*z-y^2-2*y*z-z^2"]})"), std::string::npos);
+}
+
+// A basis of over 5,000 terms is printed on two threads (json_writer.cpp): each
+// polynomial in its place, as one thread prints it.
+TEST(EncodeGroebnerResponse, ALargeBasisKeepsItsOrder) {
+  const RingPtr ring = Ring::make({"x", "y", "z", "a", "b", "c"}, MonomialOrder::lex());
+  GroebnerAnswer a;
+  a.order = "lex";
+  std::size_t terms = 0;
+  for (const char* text : {"x-(a+b+c+1)^20", "y-(a+2*b+c+3)^20", "z-(2*a+b+3*c+1)^20", "a*b-c^2/7"}) {
+    a.basis.push_back(parse_polynomial(text, ring));
+    terms += a.basis.back().num_terms();
+  }
+  ASSERT_GE(terms, 5'000u);
+  rapidjson::Document json;
+  json.Parse(encode_groebner_response(a).c_str());
+  ASSERT_TRUE(json.IsObject());
+  const auto& basis = json["basis"].GetArray();
+  ASSERT_EQ(basis.Size(), a.basis.size());
+  for (rapidjson::SizeType i = 0; i < basis.Size(); ++i) EXPECT_EQ(basis[i].GetString(), to_string(a.basis[i]));
 }
 
 }  // namespace

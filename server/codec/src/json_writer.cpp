@@ -1,10 +1,19 @@
 #include "json_writer.hpp"
 
 #include <cmath>
+#include <thread>
 
 #include "implicitizer/polynomial/printer.hpp"
 
 namespace implicitizer::json {
+
+namespace {
+
+// Printing this many terms is worth a second thread (a thread costs well under a
+// millisecond; these terms take several).
+constexpr std::size_t kTermsWorthAThread = 5'000;
+
+}  // namespace
 
 Writer& configure(Writer& w) {
   w.SetMaxDecimalPlaces(3);
@@ -22,8 +31,25 @@ void write_strings(Writer& w, const std::vector<std::string>& strings) {
 void write_milliseconds(Writer& w, double ms) { w.Double(std::isfinite(ms) && ms > 0 ? ms : 0.0); }
 
 void write_polynomials(Writer& w, const std::vector<Polynomial>& polynomials) {
+  // Printing a coefficient takes a gcd with the content's denominator (printer.cpp),
+  // and a reduced basis can run to tens of thousands of terms: a large answer is
+  // printed on two threads, every other polynomial each (docs/benchmarks.md, "Then:
+  // followers, the candidate in integers, the basis printed on two threads").
+  std::size_t terms = 0;
+  for (const Polynomial& p : polynomials) terms += p.num_terms();
+  std::vector<std::string> printed(polynomials.size());
+  auto print_every_other = [&](std::size_t first) {
+    for (std::size_t i = first; i < polynomials.size(); i += 2) printed[i] = to_string(polynomials[i]);
+  };
+  if (terms >= kTermsWorthAThread) {
+    std::thread other(print_every_other, 1);
+    print_every_other(0);
+    other.join();
+  } else {
+    for (std::size_t i = 0; i < polynomials.size(); ++i) printed[i] = to_string(polynomials[i]);
+  }
   w.StartArray();
-  for (const Polynomial& p : polynomials) write_string(w, to_string(p));
+  for (const std::string& s : printed) write_string(w, s);
   w.EndArray();
 }
 
