@@ -6,10 +6,11 @@ reads it), with the split of the route's time from its JSON.
 
     python3 bench/groebner_eliminations.py [--timeout S] [--min-seconds S]
         [--bin build/bin/implicitizer] [--before OTHER/build/bin/implicitizer]
-        [--proofs exact,random_primes]
+        [--proofs exact,random_primes] [--ideals tp_32,tri_cubic_rational]
 
 Ideals that take under --min-seconds with --bin (and the first of --proofs) are left
-out of the table (the public surfaces take milliseconds). With --before, each ideal
+out of the table (the public surfaces take milliseconds); --ideals keeps only those
+named. With --before, each ideal
 also runs with that binary (another commit's build), just before ours. --proofs runs
 each binary once per `--proof` value (random_primes: the labelled unproven mode). Each run is a whole process; a
 run past --timeout prints "> T". Prints a Markdown table (docs/benchmarks.md records
@@ -54,7 +55,9 @@ def main():
     parser.add_argument("--bin", default=os.path.join(ROOT, "build", "bin", "implicitizer"))
     parser.add_argument("--before", default="")
     parser.add_argument("--proofs", default="exact")
+    parser.add_argument("--ideals", default="", help="only these surfaces' ideals (default: every one)")
     args = parser.parse_args()
+    only = set(filter(None, args.ideals.split(",")))
     proofs = args.proofs.split(",")
     binaries = ([("before", args.before)] if args.before else []) + [("now", args.bin)]
     columns = [(label if proof == "exact" else "%s, %s" % (label, proof), binary, proof)
@@ -63,6 +66,8 @@ def main():
                                     for label, _, _ in columns) + " |")
     print("|---" * (1 + len(columns)) + "|")
     for name, variables, polys, eliminated in surface_ideals(args.bin):
+        if only and name not in only:
+            continue
         cells = [eliminate(binary, proof, variables, polys, eliminated, args.timeout) for _, binary, proof in columns]
         seconds = cells[len(binaries) - 1][0]
         if seconds is not None and seconds < args.min_seconds:

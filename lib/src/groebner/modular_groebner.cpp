@@ -269,17 +269,20 @@ class BasisLift {
   // divided by their gcd), or nullopt when a coefficient has none (each thread stops
   // at its first failure, and at the next element once another thread failed).
   std::optional<std::vector<IntPolynomial>> reconstruct(std::size_t threads) {
-    std::vector<IntPolynomial> out(elements_.size());
     std::atomic<bool> failed = false;
-    threads = std::max<std::size_t>(threads, 1);
-    const std::size_t w = ring_.monomial_size();
-    run_one_per_thread(std::min(threads, elements_.size()), [&](std::size_t t) {
+    threads = std::min(std::max<std::size_t>(threads, 1), elements_.size());
+    run_one_per_thread(threads, [&](std::size_t t) {
       for (std::size_t e = t; e < elements_.size() && !failed.load(std::memory_order_relaxed); e += threads) {
+        if (!elements_[e].lift.reconstruct()) failed = true;
+      }
+    });
+    if (failed) return std::nullopt;
+    // Made only once every element has values: most attempts fail.
+    std::vector<IntPolynomial> out(elements_.size());
+    const std::size_t w = ring_.monomial_size();
+    run_one_per_thread(threads, [&](std::size_t t) {
+      for (std::size_t e = t; e < elements_.size(); e += threads) {
         const LiftedElement& element = elements_[e];
-        if (!elements_[e].lift.reconstruct()) {
-          failed = true;
-          return;
-        }
         std::vector<Integer> values = element.lift.integer_values();
         IntPolynomial& g = out[e];
         for (std::size_t i = 0; i < values.size(); ++i) {
@@ -291,7 +294,6 @@ class BasisLift {
         detail::make_primitive(g);
       }
     });
-    if (failed) return std::nullopt;
     return out;
   }
 

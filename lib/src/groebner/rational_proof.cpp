@@ -490,10 +490,17 @@ ProofOutcome prove_groebner_basis(const Ring& ring, const std::vector<IntPolynom
       static_cast<std::size_t>(poly_bits.empty() ? 0.0 : *std::max_element(poly_bits.begin(), poly_bits.end()));
   const bool limbs = rows == ProofRows::limbs ||
                      (rows == ProofRows::by_coefficient_size && coefficient_bits <= kLimbRowCoefficientBits);
-  const ChecksRun run =
-      limbs ? run_checks<LimbRow>(schedule, generators, basis, PackedCoefficients(basis), poly_bits, coefficient_bits,
-                                  budget, workers)
-            : run_checks<MpzRow>(schedule, generators, basis, basis, poly_bits, coefficient_bits, budget, workers);
+  ChecksRun run;
+  if (limbs) {
+    run = run_checks<LimbRow>(schedule, generators, basis, PackedCoefficients(basis), poly_bits, coefficient_bits,
+                              budget, workers);
+  } else {
+    // MpzRow reads the coefficients term after term, each in its own block: copied
+    // here, one after the other, they lie together in memory (a lifted candidate's
+    // were made on the lift's threads, and its proof ran slower).
+    const std::vector<IntPolynomial> compact(basis);
+    run = run_checks<MpzRow>(schedule, generators, compact, compact, poly_bits, coefficient_bits, budget, workers);
+  }
   outcome.content_divisions = run.content_divisions;
   outcome.proven = !run.refuted;
   return outcome;
