@@ -1,7 +1,5 @@
 #include "trace_followers.hpp"
 
-#include <algorithm>
-
 namespace implicitizer::detail {
 
 TraceFollowers::TraceFollowers(const Ring& ring, const F4Trace& trace, std::vector<std::uint64_t> primes,
