@@ -46,11 +46,10 @@ constexpr std::size_t kFirstAudit = 16;
 // A prime is worth a thread of its own when it takes longer than this.
 constexpr double kThreadWorthMs = 20;
 
-// The primes a follower may replay behind the learning run (trace_followers.hpp).
-// The learning run took as long as about ten replays' F4 steps on cyclic-7 and
-// katsura-8, which need ten primes besides it (docs/algorithms.md, "F4 modulo
-// primes"); a prime more than the lift needs costs its replay's last steps and
-// interreduction after the learning run.
+// The primes a follower may replay behind the learning run (trace_followers.hpp):
+// cyclic-7 and katsura-8 need ten besides the learned one, and a prime more than the
+// lift needs costs its replay's last steps and interreduction after the learning run
+// (docs/algorithms.md, "F4 modulo primes", item 9).
 constexpr std::size_t kFollowedPrimes = 8;
 
 // A basis over ℚ of this many terms is worth interreducing on several threads
@@ -135,10 +134,14 @@ PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generator
   PrimeRun run;
   run.prime = prime;
   const detail::ModularArithmetic arithmetic(ring, prime);
-  std::optional<std::vector<ModPolynomial>> reduced = generators_modulo(generators, arithmetic);
-  if (!reduced) {
-    run.bad = true;
-    return run;
+  // A follower's replay began from these already (and its prime is not bad).
+  std::optional<std::vector<ModPolynomial>> reduced;
+  if (begun == nullptr) {
+    reduced = generators_modulo(generators, arithmetic);
+    if (!reduced) {
+      run.bad = true;
+      return run;
+    }
   }
   std::optional<detail::F4Outcome> replayed;
   if (trace != nullptr) {
@@ -148,6 +151,7 @@ PrimeRun run_prime(const Ring& ring, const std::vector<IntPolynomial>& generator
     run.replayed = replayed.has_value();
     run.replay_failed = !run.replayed;
   }
+  if (!replayed && !reduced) reduced = generators_modulo(generators, arithmetic);  // run in full
   detail::F4Outcome outcome =
       replayed ? std::move(*replayed)
       : learn != nullptr

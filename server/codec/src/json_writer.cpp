@@ -1,8 +1,8 @@
 #include "json_writer.hpp"
 
 #include <cmath>
-#include <thread>
 
+#include "implicitizer/modular/one_per_thread.hpp"
 #include "implicitizer/polynomial/printer.hpp"
 
 namespace implicitizer::json {
@@ -37,17 +37,11 @@ void write_polynomials(Writer& w, const std::vector<Polynomial>& polynomials) {
   // followers, the candidate in integers, the basis printed on two threads").
   std::size_t terms = 0;
   for (const Polynomial& p : polynomials) terms += p.num_terms();
+  const std::size_t threads = terms >= kTermsWorthAThread ? 2 : 1;
   std::vector<std::string> printed(polynomials.size());
-  auto print_every_other = [&](std::size_t first) {
-    for (std::size_t i = first; i < polynomials.size(); i += 2) printed[i] = to_string(polynomials[i]);
-  };
-  if (terms >= kTermsWorthAThread) {
-    std::thread other(print_every_other, 1);
-    print_every_other(0);
-    other.join();
-  } else {
-    for (std::size_t i = 0; i < polynomials.size(); ++i) printed[i] = to_string(polynomials[i]);
-  }
+  run_one_per_thread(threads, [&](std::size_t t) {
+    for (std::size_t i = t; i < polynomials.size(); i += threads) printed[i] = to_string(polynomials[i]);
+  });
   w.StartArray();
   for (const std::string& s : printed) write_string(w, s);
   w.EndArray();
