@@ -233,6 +233,24 @@ TEST(PatchCover, PatchBeyondFloatsRangeInASmallBox) {
             "");
 }
 
+TEST(PatchCover, CommonDenominatorBeyondDoublesRange) {
+  // x = t²/(10^400 + t), y = t: a segment of the y-axis, to 10^-400, but over the
+  // common denominator ω = 10^400 + t the double evaluation is x = t²/∞ and y = ∞/∞,
+  // a NaN that the sample leaves out (the request fuzzer found it as undefined
+  // behaviour: a NaN bucket count).
+  const std::string big = "1" + std::string(400, '0');
+  const Parametrization curve = parse_parametrization({"t^2/(" + big + "+t)", "t"});
+  const Polynomial f = parse_polynomial("x*(" + big + "+y)-y^2", space_ring());
+  SceneBox frame;
+  for (std::size_t i = 0; i < 3; ++i) {
+    frame.lo[i] = Rational(-1, 1000);
+    frame.hi[i] = Rational(i == 1 ? 1001 : 1, 1000);
+  }
+  const PatchCover cover = PatchCover::build(curve, ParameterDomain{{{Rational(0), Rational(1)}}}, f, frame, Budget());
+  EXPECT_EQ(cover.stats().sample_points, 0U);
+  for (int i = 0; i <= 10; ++i) EXPECT_EQ(cover.distance_lower_bound(V{0, 0.1 * i, 0}, 0.0), 0.0);
+}
+
 TEST(PatchCover, CancelledBudgetStopsTheBuild) {
   const Parametrization p = parse_parametrization("s-s^3/3+s*t^2", "t-t^3/3+t*s^2", "s^2-t^2");
   const Polynomial f = implicitize(p).implicit;

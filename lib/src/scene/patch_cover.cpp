@@ -79,6 +79,11 @@ class DoublePatch {
 class PointGrid {
  public:
   PointGrid(const std::vector<V>& points, double cell) : cell_(cell) {
+    if (points.empty()) {  // no point near anything: one empty bucket
+      counts_ = {1, 1, 1};
+      offsets_.assign(2, 0);
+      return;
+    }
     lo_ = hi_ = points.front();
     for (const V& p : points) {
       for (std::size_t i = 0; i < 3; ++i) {
@@ -175,7 +180,14 @@ std::vector<V> sample_patch(const Parametrization& parametrization, const Parame
       if (m == 2 && index + per_axis < total) gap = std::max(gap, length(points[index + per_axis] - points[index]));
     }
     const std::size_t next = m == 1 ? 2 * n + 1 : (2 * n + 1) * (2 * n + 1);
-    if (!(gap > spacing) || next > max_points) return points;
+    if (!(gap > spacing) || next > max_points) {
+      // Coefficients beyond double's range (the common denominator's can be, for a
+      // patch well inside it) give an infinite or NaN point, no point of the patch:
+      // left out. A sample point only spares the far-cell search a descent, so the
+      // cells it would have answered for are searched instead.
+      std::erase_if(points, [](const V& p) { return !std::isfinite(p.x + p.y + p.z); });
+      return points;
+    }
   }
 }
 
