@@ -623,10 +623,12 @@ async function drawSurface(source, equation, box, name, busy) {
   const dimension = answer.dimension === 2 ? 2 : 3;
   const answerBox = Array.isArray(answer.box) ? answer.box : box;
   let side = null;
-  // An approximation is drawn one-sided: the side function would be the exact
-  // equation, evaluated at every step, the cost the tolerance is there to avoid.
+  // An approximation brings its own side function (the signed estimate of its nearest
+  // piece): the exact equation would cost what the tolerance is there to avoid.
   const approximated = answer.approximation && !answer.approximation.exact;
-  if (answer.shape === 'sheet' && dimension === 3 && !approximated) {
+  if (answer.shape === 'sheet' && dimension === 3 && approximated && answer.side) {
+    side = { glsl: answer.side.glsl, functionName: answer.side.function };
+  } else if (answer.shape === 'sheet' && dimension === 3 && !approximated) {
     busy.setLabel('Building the sheet\'s side function…');
     // A scene of one implicit leaf rather than {implicit}: a scene is in space even
     // when F has no z (a cylinder over a curve), where {implicit} would be a plane curve.

@@ -168,7 +168,7 @@ class LibraryTest(unittest.TestCase, PngChecks):
         # answer says which shape was picked.
         answer = self.client.sdf(x="s", y="t", z="s*t", parameters=["s", "t"], domain=[0, 1, 0, "1/2"])
         self.assertEqual((answer["shape"], answer["dimension"], answer["degree"]), ("sheet", 3, 2))
-        self.assertAlmostEqual(answer["box"][4], 0.5 + 0.001, places=12)
+        self.assertAlmostEqual(answer["box"][4], 0.5 + 0.0001, places=12)
         solid = self.client.sdf(implicit="x^2+y^2+z^2-1", shape="solid")
         self.assertEqual(solid["shape"], "solid")
         with self.assertRaises(ic.ImplicitizerError) as caught:

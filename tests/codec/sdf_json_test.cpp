@@ -70,7 +70,8 @@ TEST(AnswerSdfRequest, SceneAnswersGlslUniformsAndLeaves) {
   EXPECT_EQ(answer.nodes, 3U);
   EXPECT_EQ(answer.degree, 2);
   const std::string json = encode_sdf_response(answer);
-  EXPECT_NE(json.find(R"("leaves":[{"implicit":"x*y-z","degree":2,"trimmed":true,"shape":"sheet"}])"),
+  EXPECT_NE(json.find(R"("leaves":[{"implicit":"x*y-z","degree":2,"trimmed":true,"shape":"sheet",)"
+                      R"("trimming":{"method":"slabs","leaves":1,"box_leaves":0,"blunt_edge_leaves":0}}])"),
             std::string::npos)
       << json;
   EXPECT_NE(json.find(R"("uniforms":[{"name":"ball_radius","type":"float","default":1.0}])"), std::string::npos)

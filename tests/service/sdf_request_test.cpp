@@ -42,10 +42,10 @@ TEST(AnswerSdfRequest, APatchWithoutABoxGetsTheFittedBoxAndIsASheet) {
   r.parametric = std::array<std::string, 3>{"s", "t", "s*t"};
   r.domain = {"0", "1", "0", "1"};
   const SdfAnswer answer = answer_sdf_request(r);
-  // X([0,1]^2) spans [0,1]^3, padded by 1e-3 of its largest side.
+  // X([0,1]^2) spans [0,1]^3, padded by 1e-4 of its largest side.
   for (std::size_t i = 0; i < 3; ++i) {
-    EXPECT_DOUBLE_EQ(answer.box[i], -0.001) << i;
-    EXPECT_DOUBLE_EQ(answer.box[i + 3], 1.001) << i;
+    EXPECT_DOUBLE_EQ(answer.box[i], -0.0001) << i;
+    EXPECT_DOUBLE_EQ(answer.box[i + 3], 1.0001) << i;
   }
   ASSERT_TRUE(answer.shape.has_value());
   EXPECT_EQ(*answer.shape, SdfShape::sheet);
@@ -145,6 +145,37 @@ TEST(AnswerSdfRequest, AnEquationWithoutZIsAPlaneCurve) {
   EXPECT_FLOAT_EQ(circle.scene.evaluate<float>({0.5F, 0.0F, 0.0F}), -0.75F);
 }
 
+TEST(AnswerSdfRequest, ASixNumberBoxMakesAnEquationWithoutZASurface) {
+  // Issue 39: the cylinder from its own equation.
+  SdfRequest r;
+  r.implicit = "x^2+y^2-1";
+  r.box = {"-2", "-2", "-2", "2", "2", "2"};
+  const CompiledSdfRequest cylinder = compile_sdf_request(r);
+  const SdfAnswer answer = describe_sdf_request(cylinder);
+  EXPECT_EQ(answer.dimension, 3);
+  EXPECT_NE(answer.glsl.find("float surface_sdf(vec3 p)"), std::string::npos);
+  // It runs into the box's top and bottom: automatic makes it a sheet, the same
+  // distance at every height, |r^2 - 1|/(2r) at r = 2 and 1/2.
+  EXPECT_EQ(answer.shape, std::optional<SdfShape>(SdfShape::sheet));
+  for (const float z : {-1.5F, 0.0F, 1.5F}) {
+    EXPECT_FLOAT_EQ(cylinder.scene.evaluate<float>({2.0F, 0.0F, z}), 0.75F);
+    EXPECT_FLOAT_EQ(cylinder.scene.evaluate<float>({0.0F, 0.5F, z}), 0.75F);
+  }
+  // A term with a zero coefficient changes no variable: still the plane curve without
+  // a box or with four numbers, the cylinder with six.
+  r.implicit = "x^2+y^2+0*z-1";
+  EXPECT_EQ(answer_sdf_request(r).dimension, 3);
+  r.box = {"-2", "-2", "2", "2"};
+  EXPECT_EQ(answer_sdf_request(r).dimension, 2);
+  r.box.clear();
+  const SdfAnswer curve = answer_sdf_request(r);
+  EXPECT_EQ(curve.dimension, 2);
+  EXPECT_NE(curve.glsl.find("float surface_sdf(vec2 p)"), std::string::npos);
+  // A z that survives is a surface whatever the box.
+  r.implicit = "x^2+y^2+z-1";
+  EXPECT_EQ(answer_sdf_request(r).dimension, 3);
+}
+
 TEST(AnswerSdfRequest, AParametricCurveIsTrimmedToItsDomainAndFitted) {
   SdfRequest r;
   r.parametric = std::array<std::string, 3>{"t", "t^2", ""};
@@ -153,11 +184,11 @@ TEST(AnswerSdfRequest, AParametricCurveIsTrimmedToItsDomainAndFitted) {
   const SdfAnswer answer = describe_sdf_request(parabola);
   EXPECT_EQ(answer.dimension, 2);
   EXPECT_EQ(answer.shape, std::optional<SdfShape>(SdfShape::sheet));
-  // X([-1, 1]) spans [-1, 1] x [0, 1]; padded by 1e-3 of its largest side, 2.
-  EXPECT_DOUBLE_EQ(answer.box[0], -1.002);
-  EXPECT_DOUBLE_EQ(answer.box[1], -0.002);
-  EXPECT_DOUBLE_EQ(answer.box[3], 1.002);
-  EXPECT_DOUBLE_EQ(answer.box[4], 1.002);
+  // X([-1, 1]) spans [-1, 1] x [0, 1]; padded by 1e-4 of its largest side, 2.
+  EXPECT_DOUBLE_EQ(answer.box[0], -1.0002);
+  EXPECT_DOUBLE_EQ(answer.box[1], -0.0002);
+  EXPECT_DOUBLE_EQ(answer.box[3], 1.0002);
+  EXPECT_DOUBLE_EQ(answer.box[4], 1.0002);
   EXPECT_NEAR(parabola.scene.evaluate<float>({0.5F, 0.25F, 0.0F}), 0.0F, 1e-6F);  // on the arc
   EXPECT_GT(parabola.scene.evaluate<float>({0.0F, 0.5F, 0.0F}), 0.1F);            // off it
   // A curve's domain is one interval.

@@ -190,6 +190,16 @@ PieceResult try_degree(const Context& ctx, const ParameterDomain& domain, const 
       certify_patch_to_surface(dokken.equation, ctx.forms, box_of(domain), ctx.target, kCertificateDepth, ctx.budget);
   if (!certificate.proven || !(certificate.bound <= ctx.target)) return result;
   result.best = std::max(certificate.bound, measured.distance);
+  // q's sign is arbitrary; oriented along X_s × X_t at S's centre, every piece puts its
+  // positive side where its neighbours do, so that a renderer colours the sides of the
+  // union consistently (scene/sheet_side.hpp).
+  Point x, xs, xt, gradient;
+  const double sc = (rect[0] + rect[1]) / 2, tc = (rect[2] + rect[3]) / 2;
+  if (ctx.patch.point_and_derivatives(sc, tc, x, xs, xt)) {
+    q.value_and_gradient(x, gradient);
+    const Point n{xs[1] * xt[2] - xs[2] * xt[1], xs[2] * xt[0] - xs[0] * xt[2], xs[0] * xt[1] - xs[1] * xt[0]};
+    if (gradient[0] * n[0] + gradient[1] * n[1] + gradient[2] * n[2] < 0) dokken.equation = -dokken.equation;
+  }
   const int degree_reached = int(dokken.equation.total_degree());
   result.piece = ApproximationPiece{domain,
                                     box,

@@ -36,8 +36,9 @@ void hit_at(MarchResult& r, double t) {
 // Sheets. A sheet's value is >= 0 on both sides of the surface, so the signed hit rule,
 // which catches a solid's crossings (a step that lands inside reads f < 0), never sees
 // a step that jumps across it: in mode fast (F/|∇F| is not a bound) such steps left
-// holes in the picture. With the algebraic surface at hand, the sign of G at the points
-// a march accepts shows the jump: the crossing is bisected on G's sign (in double, to
+// holes in the picture. With the sheet's side at hand (G, or an approximation's
+// SheetSide: RenderTarget::side_value), its sign at the points a march accepts shows
+// the jump: the crossing is bisected on G's sign (in double, to
 // 1e-3·ε) and is a hit when the scene's value there is below ε, i.e. when it lies on
 // the drawn part of the surface (off a trimmed patch the value there is the distance to
 // the patch and the march goes on). Two crossings within one step (a thin fold) still
@@ -46,29 +47,28 @@ void hit_at(MarchResult& r, double t) {
 class SheetCrossing {
  public:
   SheetCrossing(const RenderTarget& target, const Ray& ray)
-      : surface_(target.shape() == SdfShape::sheet && target.algebraic() ? &*target.algebraic() : nullptr), ray_(ray) {}
+      : target_(target.has_side() ? &target : nullptr), ray_(ray) {}
 
   // The crossing of the drawn sheet between the last accepted point and t (> it), if
-  // any; t becomes the last accepted point.
+  // any; t becomes the last accepted point. The side may change sign more than once
+  // between them (a step may pass the drawn sheet and the side's other zeros: an
+  // untrimmed continuation, a change of nearest piece), so the segment is scanned in
+  // kScan parts, each change bisected in turn, the first on the drawn sheet a hit.
   std::optional<double> accept(double t, const RayFunction& f, const MarchParams& params) {
-    if (!surface_) return std::nullopt;
+    if (!target_) return std::nullopt;
     const int sign = sign_at(t);
     std::optional<double> hit;
     if (sign != 0 && last_sign_ != 0 && sign != last_sign_ && t > last_t_) {
-      double a = last_t_, b = t;  // sign_at(a) = last_sign_, sign_at(b) = -last_sign_
-      for (int i = 0; i < 80 && b - a > 1e-3 * params.epsilon; ++i) {
-        const double m = 0.5 * (a + b);
-        const int s = sign_at(m);
-        if (s == 0) {
-          a = b = m;
-        } else if (s == last_sign_) {
-          a = m;
-        } else {
-          b = m;
-        }
+      double a = last_t_;
+      int sign_a = last_sign_;
+      for (int k = 1; k <= kScan && !hit; ++k) {
+        const double b = k == kScan ? t : last_t_ + (t - last_t_) * k / kScan;
+        const int sign_b = k == kScan ? sign : sign_at(b);
+        if (sign_b == 0) continue;
+        if (sign_b != sign_a) hit = bisect(a, b, sign_a, f, params);
+        a = b;
+        sign_a = sign_b;
       }
-      const double c = 0.5 * (a + b);
-      if (f(c) < params.epsilon) hit = c;
     }
     if (sign != 0) {
       last_sign_ = sign;
@@ -78,18 +78,35 @@ class SheetCrossing {
   }
 
  private:
+  static constexpr int kScan = 16;
+
+  // The crossing between a (side's sign `sign_a`) and b (the other sign), bisected on
+  // the side's sign to 1e-3·ε; a hit when the scene's value there is below ε.
+  std::optional<double> bisect(double a, double b, int sign_a, const RayFunction& f, const MarchParams& params) const {
+    for (int i = 0; i < 80 && b - a > 1e-3 * params.epsilon; ++i) {
+      const double m = 0.5 * (a + b);
+      const int s = sign_at(m);
+      if (s == 0) {
+        a = b = m;
+      } else if (s == sign_a) {
+        a = m;
+      } else {
+        b = m;
+      }
+    }
+    const double c = 0.5 * (a + b);
+    if (f(c) < params.epsilon) return c;
+    return std::nullopt;
+  }
+
   int sign_at(double t) const {
-    const AlgebraicSurface& a = *surface_;
     const auto& o = ray_.origin;
     const auto& d = ray_.direction;
-    const double g = a.value_program
-                         .evaluate((o[0] + t * d[0] - a.centre[0]) * a.scale, (o[1] + t * d[1] - a.centre[1]) * a.scale,
-                                   (o[2] + t * d[2] - a.centre[2]) * a.scale)
-                         .value;
+    const double g = target_->side_value({o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]}).value_or(0);
     return g > 0 ? 1 : g < 0 ? -1 : 0;
   }
 
-  const AlgebraicSurface* surface_;
+  const RenderTarget* target_;
   const Ray& ray_;
   int last_sign_ = 0;
   double last_t_ = 0;

@@ -47,8 +47,12 @@ RenderTarget RenderTarget::compile(const SceneNode& root, const SceneParams& opt
   const PolynomialLeaf& leaf = scene.leaves().front();
   target.shape_ = leaf.shape();
   // An approximation is a union of pieces, each its own surface in its own frame: no
-  // one algebraic surface stands for it (the exact method does not apply).
-  if (leaf.approximation()) return target;
+  // one algebraic surface stands for it (the exact method does not apply); its side
+  // function tells its sides apart.
+  if (leaf.approximation()) {
+    if (leaf.sheet_side()) target.side_ = *leaf.sheet_side();
+    return target;
+  }
   const SceneFrame frame = make_scene_frame(leaf.frame_box());
   // G has the sign of the leaf's value near the surface: −F for a solid whose enclosed
   // region is where F > 0 (PolynomialLeaf::negated()), so that the exact method's
@@ -82,8 +86,36 @@ double RenderTarget::evaluate(const std::array<double, 3>& p) const {
 }
 
 std::array<double, 3> RenderTarget::normal(const std::array<double, 3>& p, std::uint64_t* evaluations) const {
-  if (const auto g = equation_gradient(p)) return *g;
+  if (const auto g = side_gradient(p)) return *g;
   return tetrahedron_normal(p, evaluations);
+}
+
+std::optional<double> RenderTarget::side_value(const std::array<double, 3>& p) const {
+  if (shape_ != SdfShape::sheet) return std::nullopt;
+  if (algebraic_) {
+    const AlgebraicSurface& a = *algebraic_;
+    return a.value_program
+        .evaluate((p[0] - a.centre[0]) * a.scale, (p[1] - a.centre[1]) * a.scale, (p[2] - a.centre[2]) * a.scale)
+        .value;
+  }
+  if (side_) return side_->evaluate(Vec3<double>{p[0], p[1], p[2]});
+  return std::nullopt;
+}
+
+std::optional<std::array<double, 3>> RenderTarget::side_gradient(const std::array<double, 3>& p) const {
+  if (algebraic_) return equation_gradient(p);
+  if (!side_ || shape_ != SdfShape::sheet) return std::nullopt;
+  // The tetrahedron technique (tetrahedron_normal) on the side, which is smooth across
+  // the sheet where the sheet's own value has a kink.
+  const double h = 1e-3 * length_unit_;
+  std::array<double, 3> sum{0, 0, 0};
+  for (const auto& k : kTetrahedron) {
+    const double f = side_->evaluate(Vec3<double>{p[0] + h * k[0], p[1] + h * k[1], p[2] + h * k[2]});
+    for (std::size_t i = 0; i < 3; ++i) sum[i] += k[i] * f;
+  }
+  const std::array<double, 3> n = normalised(sum);
+  if (n[0] == 0 && n[1] == 0 && n[2] == 0) return std::nullopt;
+  return n;
 }
 
 std::optional<std::array<double, 3>> RenderTarget::equation_gradient(const std::array<double, 3>& p) const {

@@ -60,8 +60,9 @@ double ambient_occlusion(const RenderTarget& target, const V& p, const V& n, std
 
 SurfaceSide surface_side(const RenderTarget& target, const V& p, const V& direction) {
   if (target.shape() != SdfShape::sheet) return SurfaceSide::front;
-  // A sheet's value is >= 0 on both sides: only F's gradient knows which side is which.
-  const std::optional<V> g = target.equation_gradient(p);
+  // A sheet's value is >= 0 on both sides: only its side's gradient (F's, or an
+  // approximation's nearest piece's) knows which side is which.
+  const std::optional<V> g = target.side_gradient(p);
   return g && dot3(*g, direction) > 0 ? SurfaceSide::back : SurfaceSide::front;
 }
 

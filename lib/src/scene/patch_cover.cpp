@@ -299,44 +299,177 @@ class FarCellSearch {
   std::vector<std::vector<std::size_t>> buckets_;
 };
 
-// One node of the quadtree: a sub-domain and the box of its sub-patch, corners
-// rounded outwards to float (the evaluated box).
+// A leaf's slabs (patch_cover.hpp, "Slabs"): normals w (float, |w| <= 1) and float
+// bounds of w·(x − o) over its sub-patch, o the box's lower corner, rounded outwards;
+// all zero (0 <= 0·x <= 0 holds everywhere, an excess never above 0): none. `lo_at`
+// and `hi_at` are the bounds of w·x themselves, in double, for the edge criterion.
+struct Slabs {
+  std::array<Vec3<float>, 3> w{};
+  Vec3<float> lo{0, 0, 0}, hi{0, 0, 0};
+  std::array<double, 3> lo_at{}, hi_at{};
+  bool used = false;
+};
+
+// One node of the quadtree: a sub-domain, the box of its sub-patch (corners rounded
+// outwards to float: the evaluated box) and its slabs.
 struct Node {
   ParameterDomain domain;
   Vec3<float> lo, hi;
   std::vector<std::size_t> children;
   float largest_side = 0;
+  Slabs slabs;
 };
 
-Node make_node(const Parametrization& parametrization, ParameterDomain domain, const Budget& budget,
-               const PatchBoundsParams& bounds_params) {
-  const PatchBounds bounds = bound_patch(parametrization, domain, budget, bounds_params);
-  Node node{std::move(domain), {0, 0, 0}, {0, 0, 0}, {}, 0};
+// What every node's construction reads.
+struct CoverContext {
+  const Parametrization& parametrization;
+  DoublePatch patch;
+  const Budget& budget;
+  PatchBoundsParams bounds_params;
+};
+
+std::vector<double> centre_of(const ParameterDomain& domain) {
+  std::vector<double> c;
+  for (const auto& [lo, hi] : domain.intervals) c.push_back(to_mpq((lo + hi) / Rational(2)).get_d());
+  return c;
+}
+
+// ∂X/∂u_j at u by a central difference (the slabs' normals need only be some
+// vectors; their bounds are exact for whatever vectors are chosen).
+V partial(const DoublePatch& patch, std::vector<double> u, std::size_t j, double step) {
+  u[j] += step;
+  const V plus = patch.at(u);
+  u[j] -= 2 * step;
+  return (plus - patch.at(u)) / (2 * step);
+}
+
+V cross(const V& a, const V& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+
+// The slab normals at the centre of `domain`: for a surface w_n ∥ X_s × X_t, w_s ⊥
+// X_t, w_t ⊥ X_s (in the tangent plane); for a curve its tangent and two normals
+// (in the plane z = 0 and e_z for a plane curve). None where the frame degenerates.
+std::optional<std::array<V, 3>> tangent_frame(const CoverContext& ctx, const ParameterDomain& domain,
+                                              bool plane_curve) {
+  const std::vector<double> c = centre_of(domain);
+  std::vector<V> d;
+  for (std::size_t j = 0; j < c.size(); ++j) {
+    const double width = to_mpq(domain.intervals[j].second - domain.intervals[j].first).get_d();
+    d.push_back(partial(ctx.patch, c, j, width * 1e-4));
+  }
+  const auto unit = [](const V& v) -> std::optional<V> {
+    const double l = length(v);
+    if (!std::isfinite(l) || l <= 0) return std::nullopt;
+    return v / l;
+  };
+  std::optional<V> a, b, n;
+  if (d.size() == 2) {
+    n = unit(cross(d[0], d[1]));
+    // |X_s × X_t| far below |X_s|·|X_t|: no tangent plane worth the name.
+    if (!n || length(cross(d[0], d[1])) <= 1e-9 * length(d[0]) * length(d[1])) return std::nullopt;
+    a = unit(cross(d[1], *n));
+    b = unit(cross(*n, d[0]));
+  } else {
+    n = unit(d[0]);
+    if (!n) return std::nullopt;
+    if (plane_curve) {
+      a = V{-n->y, n->x, 0};
+      b = V{0, 0, 1};
+    } else {
+      // Any unit vector off the tangent, then the two normals.
+      const V e = std::abs(n->x) < 0.6 ? V{1, 0, 0} : V{0, 1, 0};
+      a = unit(cross(*n, e));
+      if (a) b = cross(*n, *a);
+    }
+  }
+  if (!a || !b) return std::nullopt;
+  return std::array<V, 3>{*n, *a, *b};
+}
+
+Rational exact(double x) { return to_rational(mpq_class(x)); }
+
+// The patch in the slab coordinates w_i·X (three coordinates).
+Parametrization rotated(const Parametrization& parametrization, const std::array<Vec3<float>, 3>& w) {
+  Parametrization out;
+  out.parameter_ring = parametrization.parameter_ring;
+  for (const Vec3<float>& wi : w) {
+    const double c[3] = {wi.x, wi.y, wi.z};
+    RationalFunction sum(Polynomial(parametrization.parameter_ring));
+    for (std::size_t j = 0; j < parametrization.coordinates.size(); ++j) {
+      if (c[j] == 0) continue;
+      sum = sum + RationalFunction(Polynomial::constant(parametrization.parameter_ring, exact(c[j]))) *
+                      parametrization.coordinates[j];
+    }
+    out.coordinates.push_back(std::move(sum));
+  }
+  return out;
+}
+
+constexpr float kLargestFloat = std::numeric_limits<float>::max();
+
+Slabs make_slabs(const CoverContext& ctx, const ParameterDomain& domain, const Vec3<float>& origin) {
+  Slabs slabs;
+  const bool plane_curve = ctx.parametrization.coordinates.size() == 2;
+  const std::optional<std::array<V, 3>> frame = tangent_frame(ctx, domain, plane_curve);
+  if (!frame) return slabs;
+  // (1 − 2^-20) and one rounding to float per component keep |w| below 1.
+  for (std::size_t i = 0; i < 3; ++i) {
+    const V v = (*frame)[i] * (1 - 0x1p-20);
+    slabs.w[i] = {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
+  }
+  const PatchBounds bounds = bound_patch(rotated(ctx.parametrization, slabs.w), domain, ctx.budget, ctx.bounds_params);
+  float* lo[3] = {&slabs.lo.x, &slabs.lo.y, &slabs.lo.z};
+  float* hi[3] = {&slabs.hi.x, &slabs.hi.y, &slabs.hi.z};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Vec3<float>& w = slabs.w[i];
+    const Rational offset = exact(w.x) * exact(origin.x) + exact(w.y) * exact(origin.y) + exact(w.z) * exact(origin.z);
+    *lo[i] = round_down<float>(bounds.lo[i] - offset);
+    *hi[i] = round_up<float>(bounds.hi[i] - offset);
+    slabs.lo_at[i] = to_mpq(bounds.lo[i]).get_d();
+    slabs.hi_at[i] = to_mpq(bounds.hi[i]).get_d();
+    // A bound beyond float's range cannot be stated: the leaf keeps its box alone.
+    if (!(std::abs(*lo[i]) <= kLargestFloat && std::abs(*hi[i]) <= kLargestFloat)) return Slabs{};
+  }
+  slabs.used = true;
+  return slabs;
+}
+
+Node make_node(const CoverContext& ctx, ParameterDomain domain, bool with_slabs = true) {
+  const PatchBounds bounds = bound_patch(ctx.parametrization, domain, ctx.budget, ctx.bounds_params);
+  Node node{std::move(domain), {0, 0, 0}, {0, 0, 0}, {}, 0, {}};
   float* lo[3] = {&node.lo.x, &node.lo.y, &node.lo.z};
   float* hi[3] = {&node.hi.x, &node.hi.y, &node.hi.z};
   // Beyond float's range a corner is clamped to ±FLT_MAX: for every float point p
   // the distance to the clamped box is at most the distance to the true one (equal
   // when the box reaches beyond on one side only), and the GLSL can state it.
-  constexpr float kLargest = std::numeric_limits<float>::max();
+  bool clamped = false;
   for (std::size_t i = 0; i < bounds.lo.size(); ++i) {
-    *lo[i] = std::clamp(round_down<float>(bounds.lo[i]), -kLargest, kLargest);
-    *hi[i] = std::clamp(round_up<float>(bounds.hi[i]), -kLargest, kLargest);
+    const float l = round_down<float>(bounds.lo[i]);
+    const float u = round_up<float>(bounds.hi[i]);
+    *lo[i] = std::clamp(l, -kLargestFloat, kLargestFloat);
+    *hi[i] = std::clamp(u, -kLargestFloat, kLargestFloat);
+    clamped = clamped || *lo[i] != l || *hi[i] != u;
     node.largest_side = std::max(node.largest_side, *hi[i] - *lo[i]);
   }
+  // Slabs relative to a clamped corner could overflow their own arithmetic.
+  if (with_slabs && !clamped) node.slabs = make_slabs(ctx, node.domain, node.lo);
   return node;
 }
 
-// The 2^m halves of a sub-domain (m = 1 or 2), lower halves first, the last
-// parameter fastest: consecutive leaves are neighbours in D (a Z-order).
-std::vector<ParameterDomain> split_domain(const ParameterDomain& domain) {
+// The halves of a sub-domain along the parameters whose bit is set in `halve` (all
+// of them: 2^m pieces, m = 1 or 2), lower halves first, the last parameter fastest:
+// consecutive leaves are neighbours in D (a Z-order).
+std::vector<ParameterDomain> split_domain(const ParameterDomain& domain, unsigned halve = ~0U) {
   std::vector<ParameterDomain> out(1);
-  for (const auto& [lo, hi] : domain.intervals) {
+  for (std::size_t j = 0; j < domain.intervals.size(); ++j) {
+    const auto& [lo, hi] = domain.intervals[j];
     const Rational middle = (lo + hi) / Rational(2);
+    std::vector<std::pair<Rational, Rational>> parts{{lo, hi}};
+    if ((halve >> j) & 1U) parts = {{lo, middle}, {middle, hi}};
     std::vector<ParameterDomain> next;
     for (const ParameterDomain& d : out) {
-      for (const auto& half : {std::make_pair(lo, middle), std::make_pair(middle, hi)}) {
+      for (const auto& part : parts) {
         ParameterDomain e = d;
-        e.intervals.push_back(half);
+        e.intervals.push_back(part);
         next.push_back(std::move(e));
       }
     }
@@ -382,37 +515,131 @@ Box widened(const Vec3<float>& lo, const Vec3<float>& hi, double by) {
   return {V{lo.x, lo.y, lo.z} - w, V{hi.x, hi.y, hi.z} + w};
 }
 
+double box_distance(const Box& box, const V& p) {
+  const V q{std::max({box.lo.x - p.x, p.x - box.hi.x, 0.0}), std::max({box.lo.y - p.y, p.y - box.hi.y, 0.0}),
+            std::max({box.lo.z - p.z, p.z - box.hi.z, 0.0})};
+  return length(q);
+}
+
+// Whether the frame box leaves Z past D's edge u_j = `edge` (an upper edge when
+// `upper`), along `node`'s range of the other parameter, to the slabs: the patch's
+// continuation a step of sharp_reach·h past the edge, at points along it about 0.01·h apart, lies
+// within 1.05·sharp_value·h of the frame box (sampled; a stationary or non-finite point
+// counts). Elsewhere the frame's own box distance already gives the points
+// sharp_reach·h past the edge their value (a graph over D in its fitted box: Z leaves
+// the box at the edge).
+bool continues_in_frame(const CoverContext& ctx, const Node& node, std::size_t j, double edge, bool upper,
+                        const Box& frame, double h, const PatchCoverParams& params) {
+  const std::size_t m = node.domain.intervals.size();
+  std::vector<double> u = centre_of(node.domain);
+  u[j] = edge;
+  const std::size_t other = 1 - j;  // used when m == 2
+  // About one sample per 0.01·h of the node's box (5 to 129): the frame can be nearly
+  // tangent to the continuation, and a sparse sample missed a point where it was not
+  // (tp_22's t = 0 edge).
+  const int samples =
+      m == 2 ? static_cast<int>(std::clamp(std::ceil(node.largest_side / (0.01 * h)) + 1, 5.0, 129.0)) : 1;
+  const double width = to_mpq(node.domain.intervals[j].second - node.domain.intervals[j].first).get_d();
+  for (int k = 0; k < samples; ++k) {
+    if (m == 2) {
+      const double lo = to_mpq(node.domain.intervals[other].first).get_d();
+      const double hi = to_mpq(node.domain.intervals[other].second).get_d();
+      u[other] = lo + (hi - lo) * k / (samples - 1);
+    }
+    const double speed = length(partial(ctx.patch, u, j, width * 1e-4));
+    if (!std::isfinite(speed) || speed <= 0) return true;
+    std::vector<double> beyond = u;
+    beyond[j] += (upper ? 1 : -1) * params.sharp_reach * h / speed;
+    const V q = ctx.patch.at(beyond);
+    if (!std::isfinite(q.x + q.y + q.z) || box_distance(frame, q) <= 1.05 * params.sharp_value * h) return true;
+  }
+  return false;
+}
+
+// Whether a side of `node` lets Z past an edge of `domain` come too close to its slab
+// face (patch_cover.hpp, "Edges"). Side (j, upper) of the node lies a parameter gap g
+// inside D's edge on that side, about g·|w·X_j| in the facing slab's coordinate; the
+// node's sub-patch reaches past its own side by the overshoot σ (the bound of w·X over
+// that side against the face), so the face lies σ − g·|w·X_j| past D's edge, which
+// the criterion bounds by max(0.1·sharp_reach, sharp_reach·sin θ − 1.2·sharp_value)·h.
+// An edge node has g = 0; an inner node's side is checked only when the slab's width
+// (which bounds σ) exceeds 0.9·g·|w·X_j|. Returns the parameters to halve, as bits:
+// the one along each blunt side (σ grows with the square of the side's length, and
+// halving across it would only add inner leaves); 0: none.
+unsigned blunt_edge(const CoverContext& ctx, const Node& node, const ParameterDomain& domain, const Box& frame, double h,
+                const PatchCoverParams& params) {
+  // Without a tangent frame (a singular point) smaller boxes would be all there is,
+  // and a singular edge would split to the cap: the leaf keeps its box (box_leaves).
+  if (!node.slabs.used) return 0;
+  const std::size_t m = node.domain.intervals.size();
+  const std::vector<double> c = centre_of(node.domain);
+  unsigned halve = 0;
+  for (std::size_t j = 0; j < m; ++j) {
+    // The slab facing the sides u_j = const: w_s (1) for s, w_t (2) for t; a curve's tangent (0).
+    const std::size_t i = m == 2 ? 1 + j : 0;
+    const Vec3<float>& wf = node.slabs.w[i];
+    const V w{wf.x, wf.y, wf.z};
+    const double width = to_mpq(node.domain.intervals[j].second - node.domain.intervals[j].first).get_d();
+    const V xj = partial(ctx.patch, c, j, width * 1e-4);
+    const double along = dot(w, xj);
+    const double allowed = (params.sharp_reach - 1.2 * params.sharp_value) * h;
+    for (const bool upper : {false, true}) {
+      const Rational& at = upper ? node.domain.intervals[j].second : node.domain.intervals[j].first;
+      const Rational& edge = upper ? domain.intervals[j].second : domain.intervals[j].first;
+      const double inside = 0.9 * std::abs(to_mpq(edge - at).get_d()) * std::abs(along);
+      if (inside >= node.slabs.hi_at[i] - node.slabs.lo_at[i]) continue;
+      if (!continues_in_frame(ctx, node, j, to_mpq(edge).get_d(), upper, frame, h, params)) continue;
+      // The face the side lies along: the lower one when w·X grows inward from it.
+      const bool lower_face = (along > 0) != upper;
+      ParameterDomain side = node.domain;
+      side.intervals[j] = {at, at};
+      const PatchBounds e =
+          bound_patch(rotated(ctx.parametrization, node.slabs.w), side, ctx.budget, ctx.bounds_params);
+      const double overshoot = lower_face ? to_mpq(e.hi[i]).get_d() - node.slabs.lo_at[i]
+                                          : node.slabs.hi_at[i] - to_mpq(e.lo[i]).get_d();
+      // A curve's side is a point: its tangent slab's overshoot shrinks with the node.
+      if (!(overshoot <= allowed + inside)) halve |= m == 2 ? 1U << (1 - j) : 1U;
+    }
+  }
+  return halve;
+}
+
 // The quadtree over `domain`, largest boxes split first so that the leaf cap leaves a
 // uniform refinement behind: a node is split while its box is larger than
 // params.tolerance·h and, widened by params.margin·h, may reach a far cell of `far`
-// (none: nothing to trim against).
-std::vector<Node> refine_quadtree(const Parametrization& parametrization, const ParameterDomain& domain,
-                                  FarCellSearch* far, double h, const PatchCoverParams& params, const Budget& budget,
-                                  PatchCoverStats& stats) {
-  const PatchBoundsParams bounds_params{params.tightening_depth, PatchBoundsParams().max_denominator_depth};
-  std::vector<Node> nodes{make_node(parametrization, domain, budget, bounds_params)};
+// (none: nothing to trim against), or while it is a blunt edge (blunt_edge()).
+std::vector<Node> refine_quadtree(const CoverContext& ctx, const ParameterDomain& domain, FarCellSearch* far,
+                                  const Box& frame, double h, const PatchCoverParams& params, PatchCoverStats& stats) {
+  std::vector<Node> nodes{make_node(ctx, domain)};
   const auto smaller = [&](std::size_t a, std::size_t b) { return nodes[a].largest_side < nodes[b].largest_side; };
   std::priority_queue<std::size_t, std::vector<std::size_t>, decltype(smaller)> open(smaller);
   open.push(0);
   std::size_t leaves = 1;
-  const std::size_t fan_out = std::size_t{1} << domain.intervals.size();
   while (!open.empty()) {
-    budget.check(kWhere);
+    ctx.budget.check(kWhere);
     const std::size_t i = open.top();
     open.pop();
-    if (nodes[i].largest_side <= params.tolerance * h) continue;
-    if (far == nullptr || !far->reaches_far(widened(nodes[i].lo, nodes[i].hi, params.margin * h))) continue;
-    if (leaves + fan_out - 1 > params.max_leaves) {
-      ++stats.unresolved;
-      stats.tolerance_reached = std::max(stats.tolerance_reached, nodes[i].largest_side / h);
+    const bool near_far = nodes[i].largest_side > params.tolerance * h && far != nullptr &&
+                          far->reaches_far(widened(nodes[i].lo, nodes[i].hi, params.margin * h));
+    const unsigned halve =
+        near_far ? ~0U : (far != nullptr ? blunt_edge(ctx, nodes[i], domain, frame, h, params) : 0U);
+    if (halve == 0) continue;
+    const std::vector<ParameterDomain> halves = split_domain(nodes[i].domain, halve);
+    if (leaves + halves.size() - 1 > params.max_leaves) {
+      if (near_far) {
+        ++stats.unresolved;
+        stats.tolerance_reached = std::max(stats.tolerance_reached, nodes[i].largest_side / h);
+      } else {
+        ++stats.edge_unresolved;
+      }
       continue;
     }
-    for (ParameterDomain& half : split_domain(nodes[i].domain)) {
+    for (const ParameterDomain& half : halves) {
       nodes[i].children.push_back(nodes.size());
-      nodes.push_back(make_node(parametrization, std::move(half), budget, bounds_params));
+      nodes.push_back(make_node(ctx, half));
       open.push(nodes.size() - 1);
     }
-    leaves += fan_out - 1;
+    leaves += halves.size() - 1;
   }
   return nodes;
 }
@@ -446,8 +673,9 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
   double extent = 0;
   for (const V& p : points) extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
   const PointGrid sample(points, reach / 2);
-  const PatchBoundsParams coarse{0, PatchBoundsParams().max_denominator_depth};
-  const Node hull = make_node(parametrization, domain, budget, coarse);
+  const CoverContext coarse_ctx{parametrization, DoublePatch(parametrization), budget,
+                                {0, PatchBoundsParams().max_denominator_depth}};
+  const Node hull = make_node(coarse_ctx, domain, false);
   // Every node box lies in the Bernstein hull of D (de Casteljau's control points
   // are convex combinations of the parent's), so far cells beyond it cannot matter.
   Box region = widened(hull.lo, hull.hi, 2 * params.margin * h);
@@ -460,13 +688,15 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
   FarCellSearch far(region, safe, sample, reach - 1e-12 * std::max(extent, h), params.resolution * h, budget, params,
                     stats);
 
-  const std::vector<Node> nodes =
-      refine_quadtree(parametrization, domain, searched ? &far : nullptr, h, params, budget, stats);
+  const CoverContext ctx{parametrization, DoublePatch(parametrization), budget,
+                         {params.tightening_depth, PatchBoundsParams().max_denominator_depth}};
+  const std::vector<Node> nodes = refine_quadtree(ctx, domain, searched ? &far : nullptr, frame, h, params, stats);
   stats.nodes = nodes.size();
 
   // The leaves in depth-first order, clusters of cluster_size, the last one padded.
   std::vector<std::size_t> order = leaves_in_order(nodes);
   stats.leaves = order.size();
+  for (std::size_t i : order) stats.box_leaves += nodes[i].slabs.used ? 0 : 1;
   cover.cluster_size_ = params.cluster_size;
   if (cover.cluster_size_ == 0) {
     cover.cluster_size_ = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(order.size()))));
@@ -480,6 +710,11 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
       const Node& n = nodes[order[j]];
       cover.float_.lo.push_back(n.lo);
       cover.float_.hi.push_back(n.hi);
+      cover.float_.w0.push_back(n.slabs.w[0]);
+      cover.float_.w1.push_back(n.slabs.w[1]);
+      cover.float_.w2.push_back(n.slabs.w[2]);
+      cover.float_.slab_lo.push_back(n.slabs.lo);
+      cover.float_.slab_hi.push_back(n.slabs.hi);
       clo = {std::min(clo.x, n.lo.x), std::min(clo.y, n.lo.y), std::min(clo.z, n.lo.z)};
       chi = {std::max(chi.x, n.hi.x), std::max(chi.y, n.hi.y), std::max(chi.z, n.hi.z)};
     }
@@ -500,6 +735,13 @@ void PatchCover::copy_boxes_to_double() {
   };
   double_.lo = to_double(float_.lo);
   double_.hi = to_double(float_.hi);
+  double_.w0 = to_double(float_.w0);
+  double_.w1 = to_double(float_.w1);
+  double_.w2 = to_double(float_.w2);
+  double_.slab_lo = to_double(float_.slab_lo);
+  double_.slab_hi = to_double(float_.slab_hi);
+  float_.slack = static_cast<float>(kSlabSlack);
+  double_.slack = kSlabSlackDouble;
   double_.cluster_lo = to_double(float_.cluster_lo);
   double_.cluster_hi = to_double(float_.cluster_hi);
   float_.hull_lo = lo();
@@ -545,37 +787,52 @@ std::string vec3_literal(const Vec3<float>& v) {
 }  // namespace
 
 std::string PatchCover::to_glsl(const std::string& function) const {
-  // The walk of distance_lower_bound() unrolled, the boxes as literals: a GPU
-  // indexing a constant array by a loop counter may copy the whole array for every
+  // The walk of distance_lower_bound() unrolled, the boxes and slabs as literals: a
+  // GPU indexing a constant array by a loop counter may copy the whole array for every
   // call (SwiftShader does: docs/sdf.md, "A browser frame"), which costs more than
   // the boxes' arithmetic. The padding of the last cluster repeats a leaf, and a
-  // repeated min changes nothing, so it is left out.
+  // repeated min changes nothing, so it is left out; a leaf without slabs is its box.
   const std::string f = function;
   const std::size_t clusters = float_.cluster_lo.size();
-  std::string out = "// The distance to the union of " + std::to_string(stats_.leaves) + " boxes covering the patch (" +
-                    std::to_string(clusters) + " clusters of up to " + std::to_string(cluster_size_) +
-                    "), rounded down; at least |d|.\n"
-                    "float " +
-                    f +
-                    "_d2(vec3 p, vec3 lo, vec3 hi) {\n"
-                    "  vec3 m = min(max(max(lo - p, p - hi), 0.0), vec3(" +
-                    format_glsl_float(static_cast<float>(kClamp)) +
-                    "));\n"
-                    "  return m.x * m.x + m.y * m.y + m.z * m.z;\n"
-                    "}\n"
-                    "float " +
-                    f +
-                    "(vec3 p, float d) {\n"
-                    "  float ad = abs(d);\n"
-                    "  float d2 = ad * ad;\n"
-                    "  float best = " +
-                    format_glsl_float(static_cast<float>(kFarSquared)) + ";\n";
+  std::string out =
+      "// The distance to " + std::to_string(stats_.leaves) + " leaves covering the patch (" +
+      std::to_string(clusters) + " clusters of up to " + std::to_string(cluster_size_) +
+      "): each a box and three slabs around its piece, rounded down; at least |d|.\n"
+      "float " + f + "_d2(vec3 p, vec3 lo, vec3 hi) {\n"
+      "  vec3 m = min(max(max(lo - p, p - hi), 0.0), vec3(" + format_glsl_float(static_cast<float>(kClamp)) + "));\n"
+      "  return m.x * m.x + m.y * m.y + m.z * m.z;\n"
+      "}\n"
+      "float " + f + "_leaf(vec3 p, float best, vec3 lo, vec3 hi, vec3 w0, vec3 w1, vec3 w2, vec3 slo, vec3 shi) {\n"
+      "  float a = " + f + "_d2(p, lo, hi);\n"
+      "  if (!(a < best)) return best;\n"
+      "  vec3 d = p - lo;\n"
+      "  vec3 q = vec3(dot(d, w0), dot(d, w1), dot(d, w2));\n"
+      "  vec3 s = max(slo - q, q - shi);\n"
+      "  float t = max(max(s.x, s.y), s.z) - " + format_glsl_float(float_.slack) +
+      " * max(max(abs(d.x), abs(d.y)), abs(d.z));\n"
+      "  return t > 0.0 ? min(best, max(a, t * t)) : a;\n"
+      "}\n"
+      "float " + f + "(vec3 p, float d) {\n"
+      "  float ad = abs(d);\n"
+      "  float d2 = ad * ad;\n"
+      "  float best = " + format_glsl_float(static_cast<float>(kFarSquared)) + ";\n";
+  const auto zero = [](const Vec3<float>& v) { return v.x == 0 && v.y == 0 && v.z == 0; };
+  const auto has_slabs = [&](std::size_t j) {
+    return !(zero(float_.w0[j]) && zero(float_.w1[j]) && zero(float_.w2[j]));
+  };
   for (std::size_t c = 0; c < clusters; ++c) {
     out += "  if (" + f + "_d2(p, " + vec3_literal(float_.cluster_lo[c]) + ", " + vec3_literal(float_.cluster_hi[c]) +
            ") < best) {\n";
     for (std::size_t j = c * cluster_size_; j < std::min((c + 1) * cluster_size_, stats_.leaves); ++j) {
-      out += "    best = min(best, " + f + "_d2(p, " + vec3_literal(float_.lo[j]) + ", " + vec3_literal(float_.hi[j]) +
-             "));\n";
+      if (has_slabs(j)) {
+        out += "    best = " + f + "_leaf(p, best, " + vec3_literal(float_.lo[j]) + ", " + vec3_literal(float_.hi[j]) +
+               ", " + vec3_literal(float_.w0[j]) + ", " + vec3_literal(float_.w1[j]) + ", " +
+               vec3_literal(float_.w2[j]) + ", " + vec3_literal(float_.slab_lo[j]) + ", " +
+               vec3_literal(float_.slab_hi[j]) + ");\n";
+      } else {
+        out += "    best = min(best, " + f + "_d2(p, " + vec3_literal(float_.lo[j]) + ", " +
+               vec3_literal(float_.hi[j]) + "));\n";
+      }
     }
     out += "    if (best <= d2) return ad;\n  }\n";
   }

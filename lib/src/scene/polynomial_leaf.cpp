@@ -129,9 +129,11 @@ LeafEquation leaf_equation(NodeKind kind, const PolynomialLeafSource& source, co
   LeafEquation out;
   if (kind == NodeKind::implicit) {
     try {
-      // A curve's equation is parsed in x, y: a z in it is `unknown_variable`.
-      out.f = dimension == 2 ? into_space(parse_polynomial(source.equation, plane_ring(), budget))
-                             : parse_polynomial(source.equation, space_ring(), budget);
+      out.f = parse_polynomial(source.equation, space_ring(), budget);
+      // A curve's equation is in x, y: a z that survives (its terms do not cancel) is
+      // `unknown_variable`, as the plane ring's parser says it; a term with a zero
+      // coefficient changes no variable.
+      if (dimension == 2 && out.f.involves(2)) parse_polynomial(source.equation, plane_ring(), budget);
     } catch (const InputError& e) {
       throw at_field(e, field, "equation");
     }
@@ -145,8 +147,9 @@ LeafEquation leaf_equation(NodeKind kind, const PolynomialLeafSource& source, co
   return out;
 }
 
-// The frame box fitted to a patch: its bound padded by 1e-3 of its largest side, so
-// that the patch never lies on the frame's edge. A patch whose bound is a point is
+// The frame box fitted to a patch: its bound padded by 1e-4 of its largest side, so
+// that the patch never lies on the frame's edge; no more, so that where Z runs on past
+// an edge of D out of the box its box distance trims it (patch_cover.hpp, "Edges"). A patch whose bound is a point is
 // not a surface piece, and one beyond float's range cannot be stated in the GLSL.
 SceneBox fitted_box(const PatchBounds& bounds, const std::string& field) {
   Rational largest(0);
@@ -157,7 +160,7 @@ SceneBox fitted_box(const PatchBounds& bounds, const std::string& field) {
   if (largest == Rational(0)) {
     throw InputError("invalid_domain", "the domain's image is a single point").in_field(field + ".domain");
   }
-  const Rational pad = largest / Rational(1000);
+  const Rational pad = largest / Rational(10000);
   SceneBox box;
   for (std::size_t i = 0; i < 3; ++i) {
     box.lo[i] = bounds.lo[i] - pad;
@@ -276,7 +279,11 @@ PolynomialLeaf PolynomialLeaf::build_exact(const ExactSource& in, SdfMode mode, 
     if (mode == SdfMode::safe) {
       piece.safe = SafeSdf::build(f, in.frame_box, budget, shape.shape);
     } else {
-      piece.fast = FastSdf::build(f, in.frame_box, budget, shape.shape);
+      // A patch's sheet is trimmed by its cover, 0 on the patch: where G's rounding over
+      // a vanishing gradient would make the estimate no distance (near double curves)
+      // the cover's distance stands alone (FastSdf::SheetOptions).
+      const bool covered = in.domain != nullptr && shape.shape == SdfShape::sheet;
+      piece.fast = FastSdf::build(f, in.frame_box, budget, shape.shape, {0, covered});
     }
   } catch (const InputError& e) {
     // invalid_box concerns the box; degree_too_high the equation.
@@ -336,7 +343,8 @@ PolynomialLeaf PolynomialLeaf::build_cheapest(std::optional<PolynomialLeaf> exac
   std::size_t lines = 0;
   const auto compile_accepted = [&](const std::vector<ApproximationPiece>& accepted) {
     while (leaf.pieces_.size() < accepted.size()) {
-      leaf.pieces_.push_back(build_piece(accepted[leaf.pieces_.size()], parametrization, mode, budget, field));
+      leaf.pieces_.push_back(
+          build_piece(accepted[leaf.pieces_.size()], parametrization, domain, frame_box, mode, budget, field));
       lines += leaf.piece_glsl_lines(leaf.pieces_.size() - 1);
     }
   };
@@ -371,6 +379,14 @@ PolynomialLeaf PolynomialLeaf::build_cheapest(std::optional<PolynomialLeaf> exac
   }
   leaf.equation_ = approximation.pieces.front().equation;
   leaf.frame_box_ = frame_box;
+  // Each piece's signed estimate in the leaf's frame box, not its own: a solid is
+  // clipped to its box (positive outside), and the side must keep q's sign wherever
+  // the sheet may be crossed.
+  std::vector<FastSdf> sides;
+  for (const ApproximationPiece& piece : approximation.pieces) {
+    sides.push_back(FastSdf::build(piece.equation, frame_box, budget, SdfShape::solid));
+  }
+  leaf.side_.emplace(std::move(sides));
   leaf.shape_ = SdfShape::sheet;
   leaf.shape_reason_ = "an approximated patch is a sheet";
   leaf.approximation_ = std::move(approximation);
@@ -378,29 +394,75 @@ PolynomialLeaf PolynomialLeaf::build_cheapest(std::optional<PolynomialLeaf> exac
 }
 
 PolynomialLeaf::Piece PolynomialLeaf::build_piece(const ApproximationPiece& source,
-                                                  const Parametrization& parametrization, SdfMode mode,
-                                                  const Budget& budget, const std::string& field) {
+                                                  const Parametrization& parametrization,
+                                                  const ParameterDomain& domain, const SceneBox& frame_box,
+                                                  SdfMode mode, const Budget& budget, const std::string& field) {
   budget.check("approximated leaf");
   // Each piece in the box fitted to X(S_k), as a patch's frame is to X(D): its own
-  // scale, so its fp32 evaluation is as accurate as a whole patch's.
-  const SceneBox box = fitted_box(source.box, field);
+  // scale, so its fp32 evaluation is as accurate as a whole patch's; cut to the leaf's
+  // frame box, which clips the object as it clips an exact leaf.
+  SceneBox box = fitted_box(source.box, field);
+  SceneBox cut = box;
+  bool meets = true;
+  for (std::size_t i = 0; i < 3; ++i) {
+    cut.lo[i] = std::max(box.lo[i], frame_box.lo[i]);
+    cut.hi[i] = std::min(box.hi[i], frame_box.hi[i]);
+    meets = meets && cut.lo[i] < cut.hi[i];
+  }
+  if (meets) box = cut;
   Piece piece;
   try {
     if (mode == SdfMode::safe) {
       piece.safe = SafeSdf::build(source.equation, box, budget, SdfShape::sheet);
     } else {
-      piece.fast = FastSdf::build(source.equation, box, budget, SdfShape::sheet);
+      // q approximates the patch near its piece only: farther, its gradient may be small
+      // where q is not, and q/|grad q| overshoot the drawn sheet by more than a step can
+      // recover (docs/sdf.md, "Approximate implicitization"); capped at a quarter of the
+      // piece's half side, a march crosses the piece's box in a few steps.
+      piece.fast = FastSdf::build(source.equation, box, budget, SdfShape::sheet, {kPieceEstimateCap, false});
     }
   } catch (const InputError& e) {
     throw at_field(e, field, e.code() == "invalid_box" ? "box" : "");
   }
-  // A polytope when the approximation measured its kept zeros there, else a cover.
-  if (source.polytope) {
+  // A polytope when the approximation measured its kept zeros there and the piece
+  // touches no edge of D; else a cover. A polytope keeps q's zeros within the
+  // tolerance of X(S) but not sharp to D's edges: its planes let q's continuation past
+  // an edge show as a halo a pixel wide (Enneper's surface at the page's tolerance:
+  // hit-mask IoU 0.975 against the exact equation, 1.000 with covers; docs/sdf.md).
+  const bool inner = [&] {
+    for (std::size_t j = 0; j < domain.intervals.size(); ++j) {
+      if (source.domain.intervals[j].first == domain.intervals[j].first ||
+          source.domain.intervals[j].second == domain.intervals[j].second) {
+        return false;
+      }
+    }
+    return true;
+  }();
+  if (source.polytope && inner) {
     piece.polytope.emplace(*source.polytope, source.box);
   } else {
     piece.cover = PatchCover::build(parametrization, source.domain, source.equation, box, budget);
   }
   return piece;
+}
+
+TrimmingSummary PolynomialLeaf::trimming() const {
+  TrimmingSummary t;
+  bool covers = false, polytopes = false;
+  for (const Piece& piece : pieces_) {
+    if (!piece.cover) {
+      polytopes = polytopes || piece.polytope.has_value();
+      continue;
+    }
+    covers = true;
+    const PatchCoverStats& stats = piece.cover->stats();
+    t.leaves += stats.leaves;
+    t.box_leaves += stats.box_leaves;
+    t.blunt_edge_leaves += stats.edge_unresolved;
+  }
+  const std::string slabs = t.box_leaves + t.blunt_edge_leaves > 0 ? "slabs and boxes" : "slabs";
+  t.method = polytopes ? (covers ? "polytopes and " + slabs : "polytopes") : slabs;
+  return t;
 }
 
 std::string PolynomialLeaf::trim_glsl(const std::string& function, std::size_t k) const {

@@ -1,15 +1,18 @@
 #include "implicitizer/sdf/fast_sdf.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace implicitizer {
 
-FastSdf FastSdf::build(const Polynomial& f, const SceneBox& box, const Budget& budget, SdfShape shape) {
+FastSdf FastSdf::build(const Polynomial& f, const SceneBox& box, const Budget& budget, SdfShape shape,
+                       FastSheetOptions sheet) {
   if (shape == SdfShape::automatic) throw std::invalid_argument("FastSdf::build: decide the shape first");
   FastSdf sdf;
   sdf.shape_ = shape;
   sdf.frame_ = make_scene_frame(box);
-  sdf.program_ = PolynomialProgram::compile(frame_polynomial(f, sdf.frame_, budget));
+  const Polynomial g = frame_polynomial(f, sdf.frame_, budget);
+  sdf.program_ = PolynomialProgram::compile(g);
   // The centre and scale are floats already (SceneFrame's invariant): exact here.
   for (std::size_t i = 0; i < 3; ++i) {
     sdf.centre_[i] = to_mpq(sdf.frame_.centre[i]).get_d();
@@ -19,6 +22,26 @@ FastSdf FastSdf::build(const Polynomial& f, const SceneBox& box, const Budget& b
   sdf.scale_float_ = static_cast<float>(sdf.scale_);
   sdf.half_extent_ = 1 / sdf.scale_;
   sdf.half_extent_float_ = static_cast<float>(sdf.half_extent_);
+  if (shape == SdfShape::sheet && sheet.cap > 0) {
+    sdf.cap_float_ = static_cast<float>(sheet.cap * sdf.half_extent_);
+    sdf.cap_ = sdf.cap_float_;
+  }
+  if (shape == SdfShape::sheet && sheet.zero_where_untrusted) {
+    // The radial majorant: Ĝ(|u|) <= Σ_k S_k·r^k, S_k the sum of |g_α| over the terms of
+    // degree k and r = max|u_i| (each monomial of degree k is at most r^k), times
+    // kTrustFactor·γ_m so that the program compares |∇G| with it directly; each S_k
+    // rounded up, and 2^-10 more for the float evaluation of the majorant itself.
+    const double m = 2.0 * sdf.program_.degree() + 4, eps = 0x1p-23;
+    const double factor = kTrustFactor * m * eps / (1 - m * eps) * (1 + 0x1p-10);
+    std::vector<double> sums(static_cast<std::size_t>(sdf.program_.degree()) + 1, 0.0);
+    for (std::size_t t = 0; t < g.num_terms(); ++t) {
+      std::int32_t k = 0;
+      for (const std::int32_t e : g.exponents(t)) k += e;
+      sums[static_cast<std::size_t>(k)] += std::abs(to_mpq(g.coefficient(t)).get_d()) * (1 + 0x1p-50);
+    }
+    for (const double s : sums) sdf.trust_float_.push_back(round_up<float>(to_rational(mpq_class(s * factor))));
+    sdf.trust_.assign(sdf.trust_float_.begin(), sdf.trust_float_.end());
+  }
   return sdf;
 }
 
@@ -48,9 +71,29 @@ std::string FastSdf::to_glsl(const std::string& function) const {
   out += "    return box;\n";
   out += "  }\n";
   out += program_.to_glsl("  ");
-  out += "  float d = g / max(sqrt(gu * gu + gv * gv + gw * gw), " +
-         format_glsl_float(static_cast<float>(kGradientFloor)) + ") * " + format_glsl_float(half_extent_float_) + ";\n";
-  out += sheet ? "  return max(abs(d), box);\n" : "  return max(d, box);\n";
+  if (!trust_float_.empty()) {
+    // The radial majorant by Horner in r (FastSheetOptions::zero_where_untrusted).
+    std::string majorant = format_glsl_float(trust_float_.back());
+    for (std::size_t k = trust_float_.size() - 1; k-- > 0;) {
+      majorant = "(" + majorant + ") * r + " + format_glsl_float(trust_float_[k]);
+    }
+    out += "  float r = max(abs(u), max(abs(v), abs(w)));\n";
+    out += "  float len = sqrt(gu * gu + gv * gv + gw * gw);\n";
+    out += "  float d = len >= " + majorant + " ? g / max(len, " +
+           format_glsl_float(static_cast<float>(kGradientFloor)) + ") * " + format_glsl_float(half_extent_float_) +
+           " : 0.0;\n";
+  } else {
+    out += "  float d = g / max(sqrt(gu * gu + gv * gv + gw * gw), " +
+           format_glsl_float(static_cast<float>(kGradientFloor)) + ") * " + format_glsl_float(half_extent_float_) +
+           ";\n";
+  }
+  if (!sheet) {
+    out += "  return max(d, box);\n";
+  } else if (cap_ > 0) {
+    out += "  return max(min(abs(d), " + format_glsl_float(cap_float_) + "), box);\n";
+  } else {
+    out += "  return max(abs(d), box);\n";
+  }
   out += "}\n";
   return out;
 }

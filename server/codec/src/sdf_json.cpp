@@ -10,6 +10,20 @@
 namespace implicitizer {
 namespace {
 
+void write_trimming(json::Writer& w, const TrimmingSummary& t) {
+  w.Key("trimming");
+  w.StartObject();
+  w.Key("method");
+  json::write_string(w, t.method);
+  w.Key("leaves");
+  w.Uint64(t.leaves);
+  w.Key("box_leaves");
+  w.Uint64(t.box_leaves);
+  w.Key("blunt_edge_leaves");
+  w.Uint64(t.blunt_edge_leaves);
+  w.EndObject();
+}
+
 void write_leaves(json::Writer& w, const std::vector<SdfLeafSummary>& leaves) {
   w.StartArray();
   for (const SdfLeafSummary& leaf : leaves) {
@@ -22,6 +36,7 @@ void write_leaves(json::Writer& w, const std::vector<SdfLeafSummary>& leaves) {
     w.Bool(leaf.trimmed);
     w.Key("shape");
     json::write_string(w, to_string(leaf.shape));
+    if (leaf.trimming) write_trimming(w, *leaf.trimming);
     if (leaf.approximation) json::write_approximation(w, *leaf.approximation);
     w.EndObject();
   }
@@ -75,6 +90,16 @@ std::string encode_sdf_response(const SdfAnswer& answer) {
       w.Uint64(answer.nodes);
       w.Key("leaves");
       write_leaves(w, answer.leaves);
+    }
+    if (answer.trimming) write_trimming(w, *answer.trimming);
+    if (!answer.side_function.empty()) {
+      w.Key("side");
+      w.StartObject();
+      w.Key("glsl");
+      json::write_string(w, answer.side_glsl);
+      w.Key("function");
+      json::write_string(w, answer.side_function);
+      w.EndObject();
     }
     if (answer.approximation) json::write_approximation(w, *answer.approximation);
     w.Key("uniforms");

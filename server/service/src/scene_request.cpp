@@ -36,7 +36,7 @@ Rational parse_box_number(const std::string& text, const Budget& budget) {
   return *q;
 }
 
-// Whether the equation mentions z: without it, it is a plane curve. Parse errors are
+// Whether the equation involves z (a term with a zero coefficient does not). Parse errors are
 // the request's ("implicit"), found here before the scene compiler would.
 bool mentions_z(const std::string& equation, const Budget& budget) {
   try {
@@ -69,7 +69,10 @@ SceneNode leaf_of(const SceneRequest& request, int& dimension, const Budget& bud
   }
   node.kind = NodeKind::implicit;
   node.leaf.equation = request.implicit;
-  dimension = mentions_z(request.implicit, budget) ? 3 : 2;
+  // In space when F involves z or the box has six numbers (F(x, y) = 0 is then the
+  // cylinder over the curve); else a plane curve.
+  const bool with_z = mentions_z(request.implicit, budget);
+  dimension = with_z || request.box.size() == 6 ? 3 : 2;
   return node;
 }
 

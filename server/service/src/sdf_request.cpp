@@ -58,10 +58,18 @@ SdfAnswer describe_sdf_request(const CompiledSdfRequest& compiled) {
     const std::optional<ApproximationSummary> approximation = summarize_approximation(leaf, lines);
     const std::int32_t degree = approximation ? approximation->degree : leaf.equation().total_degree();
     answer.degree = std::max(answer.degree, degree);
+    std::optional<TrimmingSummary> trimming;
+    if (leaf.trimmed()) trimming = leaf.trimming();
     if (!source.one_leaf) {
-      answer.leaves.push_back({to_string(leaf.equation()), degree, leaf.trimmed(), leaf.shape(), approximation});
+      answer.leaves.push_back(
+          {to_string(leaf.equation()), degree, leaf.trimmed(), leaf.shape(), trimming, approximation});
     } else {
       answer.approximation = approximation;
+      answer.trimming = trimming;
+      if (const SheetSide* side = leaf.sheet_side()) {
+        answer.side_function = source.params.name + "_side";
+        answer.side_glsl = side->to_glsl(answer.side_function);
+      }
     }
   }
   if (!source.one_leaf) answer.nodes = scene.node_count();

@@ -20,7 +20,10 @@
 /// polynomial leaf is a solid or a sheet (PolynomialLeaf::shape()); any other scene
 /// is drawn as a solid (its value may hold sheets through `shell`, which makes them
 /// thin solids). A sheet has two sides, told apart by the sign of F: shading.hpp
-/// colours the one a ray sees, from ∇G at the hit (docs/render.md §5).
+/// colours the one a ray sees, from ∇G at the hit (docs/render.md §5). An approximated
+/// sheet has no one F: its side is the leaf's SheetSide (sheet_side.hpp), the signed
+/// estimate of its nearest piece, whose gradient (by the tetrahedron technique) and
+/// sign serve in G's place.
 
 #include <array>
 #include <cstdint>
@@ -32,6 +35,7 @@
 #include "implicitizer/render/ray_polynomial.hpp"
 #include "implicitizer/scene/compiled_scene.hpp"
 #include "implicitizer/scene/scene_node.hpp"
+#include "implicitizer/scene/sheet_side.hpp"
 #include "implicitizer/sdf/polynomial_program.hpp"
 #include "implicitizer/sdf/sdf_shape.hpp"
 
@@ -99,6 +103,18 @@ class RenderTarget {
   /// last step uses. h = 1e-3·length_unit().
   std::array<double, 3> tetrahedron_normal(const std::array<double, 3>& p, std::uint64_t* evaluations = nullptr) const;
 
+  /// The signed side of a sheet at p: G (the algebraic surface's) or the approximated
+  /// leaf's SheetSide value, in double; none for a solid or a scene of more than one
+  /// node. Its sign changes across the drawn sheet (and elsewhere where the sheet's
+  /// value is not small: sheet_side.hpp).
+  std::optional<double> side_value(const std::array<double, 3>& p) const;
+  /// The unit gradient of the side at p (it points to where the side is positive):
+  /// equation_gradient(), or for an approximated sheet the tetrahedron technique on its
+  /// SheetSide; none when neither applies or the direction vanishes.
+  std::optional<std::array<double, 3>> side_gradient(const std::array<double, 3>& p) const;
+  /// Whether side_value() answers.
+  bool has_side() const { return shape_ == SdfShape::sheet && (algebraic_ || side_); }
+
   /// The algebraic surface, when the scene is a single polynomial leaf of one exact
   /// equation (not an approximation, polynomial_leaf.hpp).
   const std::optional<AlgebraicSurface>& algebraic() const { return algebraic_; }
@@ -138,6 +154,7 @@ class RenderTarget {
   SdfShape shape_ = SdfShape::solid;
   int dimension_ = 3;
   std::optional<AlgebraicSurface> algebraic_;
+  std::optional<SheetSide> side_;  // an approximated sheet's (algebraic_ is then none)
 };
 
 }  // namespace implicitizer

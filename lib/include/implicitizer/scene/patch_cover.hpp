@@ -34,16 +34,45 @@
 /// the refinement first; stats().unresolved then says how many leaves are neither
 /// small nor proven, and stats().tolerance_reached how large the largest is.
 ///
+/// Slabs. A box trims no closer than its own size: where Z continues past an edge of
+/// D, up to a box of it stays inside. So each leaf also carries three slabs
+/// lo_i <= w_i·(x − o) <= hi_i (o the box's lower corner) that its sub-patch lies in,
+/// their normals taken from the tangent frame at the sub-domain's centre: for a
+/// surface, w_n ∥ X_s × X_t and the two in-plane normals w_s ⊥ X_t and w_t ⊥ X_s, so
+/// that the faces of w_s lie along the sub-patch's s-edges and those of w_t along its
+/// t-edges, bent away from them only by the edges' curvature (second order in the
+/// leaf's size); for a curve, its tangent and two normals. The bounds are exact
+/// (bound_patch() of the rotated patch w·X, each w_i a float vector read exactly,
+/// |w_i| <= 1 by construction) rounded outwards to float. For every x of the sub-patch
+/// and every p, |p − x| >= w_i·(p − x) >= w_i·(p − o) − hi_i (and lo_i − w_i·(p − o)),
+/// so the largest slab excess s(p) is a lower bound of the distance to the sub-patch;
+/// the leaf's value is max(box distance, s(p) − kSlabSlack·|p − o|_∞), the slack
+/// covering the rounding of p − o and of the three dot products (at most 4 roundings
+/// of relative 2^-23 on at most √3·|p − o|_∞), the rest relative and inside the
+/// final shrink. A leaf without a tangent frame (X_s × X_t vanishing at its centre) or
+/// with a slab bound beyond float's range keeps its box alone (stats().box_leaves).
+///
+/// Edges. Let σ be how far the sub-patch's edge on ∂D lies inside the facing slab
+/// face (the bound of w·X over that edge against the face), and θ the angle between
+/// X_s and X_t. A point of Z a distance d past the edge continues the patch across it,
+/// so its slab excess is about d·sin θ − σ; a leaf on an edge of D across which Z
+/// continues inside the frame (sampled: the continuation a sharp_reach·h step past
+/// the edge, at points about 0.01·h apart, lies within 1.05·sharp_value·h of the frame box) is split until σ <= max(0.1·sharp_reach,
+/// sharp_reach·sin θ − 1.2·sharp_value)·h, so that points of Z sharp_reach·h past
+/// the edge get values above sharp_value·h (docs/sdf.md, "Patches", measures it).
+///
 /// Evaluation. The leaves, in quadtree order, are grouped in clusters of
 /// cluster_size (default ⌈√leaves⌉) consecutive leaves (the last one padded by repeating its last leaf),
 /// each with the box around its leaves. distance_lower_bound() walks the clusters,
-/// opens only those closer than the best leaf so far and returns as soon as a leaf is
-/// within |d|. Boxes are stored rounded outwards (float and double; corners beyond
+/// opens only those closer than the best leaf so far, evaluates a leaf's slabs only
+/// when its box is closer than the best, and returns as soon as a leaf is within |d|
+/// (the cluster's and the leaf's box distances are at most the leaf's value, so a
+/// skipped leaf could not have lowered the minimum). Boxes are stored rounded outwards (float and double; corners beyond
 /// float's range clamped to ±FLT_MAX, which only shortens distances), squared
 /// distances are computed with each component clamped to 1e18 (no overflow; a
 /// smaller distance), and the final square root is multiplied by 1 − 2^−17 (float;
 /// 1 − 2^−46 for double), more than the relative rounding of the few operations
-/// involved, so the result is at most the true distance to the union of the boxes.
+/// involved, so the result is at most the true distance to the union of the leaves.
 /// to_glsl() prints the same steps.
 
 #include <cmath>
@@ -73,6 +102,11 @@ struct PatchCoverParams {
   std::size_t cluster_size = 0;
   std::size_t tightening_depth = 1;          ///< bound_patch()'s tightening per node box
   std::size_t max_search_cells = 4'000'000;  ///< cells the far-cell search may visit (LimitExceeded beyond)
+  /// Edge sharpness: a leaf at an edge of D across which Z continues inside the frame
+  /// is split until a point of Z `sharp_reach`·h past that edge gets a slab value
+  /// above `sharp_value`·h (the file comment's "Edges").
+  double sharp_reach = 0.003;
+  double sharp_value = 0.001;  ///< see sharp_reach
 };
 
 /// What build() did.
@@ -86,6 +120,8 @@ struct PatchCoverStats {
   bool proven_empty_cells = false;  ///< whether the safe bound was available to drop cells without Z
   std::size_t unresolved = 0;       ///< leaves neither small nor proven away from far cells (the cap stopped them)
   double tolerance_reached = 0;     ///< largest side / h of an unresolved leaf (0: none)
+  std::size_t box_leaves = 0;       ///< leaves trimmed by their box alone (no tangent frame: a singular point)
+  std::size_t edge_unresolved = 0;  ///< edge leaves the cap left blunter than sharp_reach
 };
 
 /// The boxes covering X(D), ready to evaluate in C++ and GLSL.
@@ -101,8 +137,8 @@ class PatchCover {
                           const Polynomial& equation, const SceneBox& frame_box, const Budget& budget = Budget(),
                           const PatchCoverParams& params = PatchCoverParams());
 
-  /// max(|d|, D(p)) with D(p) <= the distance from p to the union of the leaf boxes
-  /// (the file comment's steps; float: the GLSL's arithmetic).
+  /// max(|d|, D(p)) with D(p) <= the distance from p to the patch, the smallest of
+  /// the leaves' values (the file comment's steps; float: the GLSL's arithmetic).
   template <typename T>
   T distance_lower_bound(const Vec3<T>& p, T d) const {
     const Boxes<T>& b = boxes<T>();
@@ -112,7 +148,7 @@ class PatchCover {
     const std::size_t k = cluster_size_;
     for (std::size_t c = 0; c < b.cluster_lo.size(); ++c) {
       if (squared_distance(p, b.cluster_lo[c], b.cluster_hi[c]) < best) {
-        for (std::size_t j = c * k; j < (c + 1) * k; ++j) best = std::min(best, squared_distance(p, b.lo[j], b.hi[j]));
+        for (std::size_t j = c * k; j < (c + 1) * k; ++j) best = leaf_squared(b, j, p, best);
         if (best <= d2) return ad;
       }
     }
@@ -136,12 +172,12 @@ class PatchCover {
   /// The further factor of hull_distance_lower_bound().
   static constexpr double kHullShrink = 1.0 - 0x1p-16;
 
-  /// `float FUNCTION(vec3 p, float d)` and its helper FUNCTION_d2, computing
+  /// `float FUNCTION(vec3 p, float d)` and its helpers FUNCTION_d2 and FUNCTION_leaf, computing
   /// distance_lower_bound<float>: the same walk, unrolled, the boxes stated as
   /// literals. Precondition: FUNCTION is a valid GLSL identifier.
   std::string to_glsl(const std::string& function) const;
   /// The other global names to_glsl(FUNCTION) defines: FUNCTION + each suffix.
-  static std::vector<std::string> glsl_suffixes() { return {"_d2"}; }
+  static std::vector<std::string> glsl_suffixes() { return {"_d2", "_leaf"}; }
 
   /// What build() did.
   const PatchCoverStats& stats() const { return stats_; }
@@ -149,6 +185,14 @@ class PatchCover {
   const std::vector<Vec3<float>>& leaf_lo() const { return float_.lo; }
   /// See leaf_lo().
   const std::vector<Vec3<float>>& leaf_hi() const { return float_.hi; }
+  /// Each leaf's slab normals w_i (i = 0, 1, 2; all zero: no slabs), aligned with leaf_lo().
+  const std::vector<Vec3<float>>& leaf_slab_normals(std::size_t i) const {
+    return i == 0 ? float_.w0 : (i == 1 ? float_.w1 : float_.w2);
+  }
+  /// Each leaf's lower slab bounds of w_i·(x − leaf_lo()), one component per slab.
+  const std::vector<Vec3<float>>& leaf_slab_lo() const { return float_.slab_lo; }
+  /// See leaf_slab_lo().
+  const std::vector<Vec3<float>>& leaf_slab_hi() const { return float_.slab_hi; }
   /// The union of the leaf boxes' float corners (the box the trimmed leaf lies in).
   Vec3<float> lo() const;
   /// See lo().
@@ -156,6 +200,11 @@ class PatchCover {
 
   /// The starting value of the squared distance (finite, above any clamped square).
   static constexpr double kFarSquared = 3.0e38;
+  /// The slab excess is lowered by this times |p − o|_∞ (float; kSlabSlackDouble in
+  /// double): 4 roundings of 2^-23 on at most √3·|p − o|_∞ is 8.3·2^-23 < 2^-19.
+  static constexpr double kSlabSlack = 0x1p-19;
+  /// See kSlabSlack (the same count of roundings of 2^-52).
+  static constexpr double kSlabSlackDouble = 0x1p-48;
   /// Each component of a box distance is clamped to this before squaring.
   static constexpr double kClamp = 1e18;
 
@@ -166,6 +215,9 @@ class PatchCover {
   template <typename T>
   struct Boxes {
     std::vector<Vec3<T>> lo, hi;                  // cluster_size_ per cluster
+    std::vector<Vec3<T>> w0, w1, w2;              // each leaf's slab normals (0: no slabs)
+    std::vector<Vec3<T>> slab_lo, slab_hi;        // its slab bounds, relative to lo
+    T slack = 0;                                  // kSlabSlack or kSlabSlackDouble
     std::vector<Vec3<T>> cluster_lo, cluster_hi;  // one per cluster
     Vec3<T> hull_lo{}, hull_hi{};                 // the box around every leaf box
     T shrink = 1;
@@ -177,6 +229,20 @@ class PatchCover {
                     std::max(lo.z - p.z, p.z - hi.z)};
     const Vec3<T> m = min(max(q, T(0)), T(kClamp));
     return m.x * m.x + m.y * m.y + m.z * m.z;
+  }
+
+  // min(best, leaf j's squared value): its box distance, and when that is below best
+  // the larger of it and the square of its slab excess less the slack.
+  template <typename T>
+  static T leaf_squared(const Boxes<T>& b, std::size_t j, const Vec3<T>& p, T best) {
+    const T a = squared_distance(p, b.lo[j], b.hi[j]);
+    if (!(a < best)) return best;
+    const Vec3<T> d = p - b.lo[j];
+    const Vec3<T> q{dot(d, b.w0[j]), dot(d, b.w1[j]), dot(d, b.w2[j])};
+    const Vec3<T> s = max(b.slab_lo[j] - q, q - b.slab_hi[j]);
+    const T t = std::max(std::max(s.x, s.y), s.z) -
+                b.slack * std::max(std::max(std::abs(d.x), std::abs(d.y)), std::abs(d.z));
+    return t > 0 ? std::min(best, std::max(a, t * t)) : a;
   }
 
   template <typename T>

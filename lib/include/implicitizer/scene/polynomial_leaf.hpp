@@ -24,7 +24,7 @@
 /// Patches. A parametric leaf is the patch X(D) of its domain D (the source's, else
 /// the default domain of patch_domain.hpp: the whole parameter plane when the
 /// parametrization is bounded on it, else [0, 1]^m). Without a box of its own the
-/// frame box is fitted to X(D): the exact bound of bound_patch() padded by 1e-3 of its
+/// frame box is fitted to X(D): the exact bound of bound_patch() padded by 1e-4 of its
 /// largest side. Over a bounded domain a sheet is trimmed to a PatchCover
 /// (patch_cover.hpp), boxes B_k with X(D) ⊂ ∪ B_k, and its value is
 ///     t(p) = max(|d(p)|, D(p)),  D(p) <= dist(p, ∪ B_k),
@@ -74,6 +74,7 @@
 #include "implicitizer/scene/patch_cover.hpp"
 #include "implicitizer/scene/polytope_trim.hpp"
 #include "implicitizer/scene/scene_node.hpp"
+#include "implicitizer/scene/sheet_side.hpp"
 #include "implicitizer/scene/vec3.hpp"
 #include "implicitizer/sdf/fast_sdf.hpp"
 #include "implicitizer/sdf/glsl_export.hpp"
@@ -82,6 +83,20 @@
 #include "implicitizer/sdf/sdf_shape.hpp"
 
 namespace implicitizer {
+
+/// How a trimmed leaf cuts its surface to its patch (the answers' "trimming").
+struct TrimmingSummary {
+  /// "slabs": every cover leaf has its slabs and every edge met the sharpness
+  /// criterion (patch_cover.hpp, "Edges"); "slabs and boxes": some leaves have a box
+  /// alone (no tangent plane at their centre) or the leaf cap left edges blunt;
+  /// "polytopes": an approximation's pieces cut by their polytopes (each piece's
+  /// planes, measured with the approximation); "polytopes and slabs": both kinds of
+  /// pieces.
+  std::string method;
+  std::size_t leaves = 0;             ///< cover leaves over all pieces
+  std::size_t box_leaves = 0;         ///< of which with their box alone
+  std::size_t blunt_edge_leaves = 0;  ///< edge leaves the cap left blunter than the criterion
+};
 
 /// One compiled polynomial leaf.
 class PolynomialLeaf {
@@ -131,6 +146,9 @@ class PolynomialLeaf {
   /// term (and its cover more). A tolerance's approximation stops once its pieces plus
   /// this much per sub-domain left reach the exact leaf's lines.
   static constexpr std::size_t kMinPieceGlslLines = 16;
+  /// Mode fast: an approximated piece's |q/|grad q|| is capped at this fraction of its
+  /// frame box's largest half side (FastSdf::build's sheet_cap).
+  static constexpr double kPieceEstimateCap = 0.25;
   /// The lines the leaf adds to a scene's GLSL: its pieces' distance functions and
   /// covers, and each further piece's culling test (what a tolerance compares).
   std::size_t glsl_lines() const;
@@ -156,6 +174,8 @@ class PolynomialLeaf {
 
   /// Whether the leaf is a patch trimmed to its cover(s) or polytopes.
   bool trimmed() const { return pieces_.front().cover || pieces_.front().polytope; }
+  /// How it is trimmed (precondition: trimmed()).
+  TrimmingSummary trimming() const;
   /// The shape the leaf's value describes (never automatic: what was picked).
   SdfShape shape() const { return shape_; }
   /// Why that shape: "asked", or decide_enclosure()'s reason under automatic.
@@ -175,6 +195,9 @@ class PolynomialLeaf {
   /// The frame box the distance is computed in (an approximation: the box fitted to
   /// the whole patch, which the answers report; each piece has its own).
   const SceneBox& frame_box() const { return frame_box_; }
+  /// An approximation's side (sheet_side.hpp): the signed companion renderers read to
+  /// tell its sides apart and notice steps across it (null: not an approximation).
+  const SheetSide* sheet_side() const { return side_ ? &*side_ : nullptr; }
   /// The approximation the leaf is built from (null: the exact equation).
   const PatchApproximation* approximation() const { return approximation_ ? &*approximation_ : nullptr; }
   /// The tolerance the source asked for (none: exact).
@@ -243,8 +266,10 @@ class PolynomialLeaf {
                                        const Parametrization& parametrization, const ParameterDomain& domain,
                                        const SceneBox& frame_box, double tolerance, SdfMode mode, const Budget& budget,
                                        const std::string& field);
-  // One approximation piece: q_k's distance in its own fitted box, trimmed to X(S_k)'s cover.
-  static Piece build_piece(const ApproximationPiece& source, const Parametrization& parametrization, SdfMode mode,
+  // One approximation piece: q_k's distance in its own fitted box cut to the leaf's
+  // frame box, trimmed to X(S_k)'s cover or (a piece inside D, off its edges) its polytope.
+  static Piece build_piece(const ApproximationPiece& source, const Parametrization& parametrization,
+                           const ParameterDomain& domain, const SceneBox& frame_box, SdfMode mode,
                            const Budget& budget, const std::string& field);
 
   Polynomial equation_;
@@ -254,6 +279,7 @@ class PolynomialLeaf {
   std::string shape_reason_;
   bool negated_ = false;
   std::optional<PatchApproximation> approximation_;
+  std::optional<SheetSide> side_;
   std::optional<double> tolerance_;
   std::string kept_exact_;
 };

@@ -50,6 +50,12 @@ Vec3<T> max(const Vec3<T>& a, T b) {
   return {std::max(a.x, b), std::max(a.y, b), std::max(a.z, b)};
 }
 
+/// GLSL max(vec3, vec3) on each component.
+template <typename T>
+Vec3<T> max(const Vec3<T>& a, const Vec3<T>& b) {
+  return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
+}
+
 /// GLSL min(vec3, float) on each component.
 template <typename T>
 Vec3<T> min(const Vec3<T>& a, T b) {

@@ -34,6 +34,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "implicitizer/polynomial/polynomial.hpp"
 #include "implicitizer/sdf/polynomial_program.hpp"
@@ -41,6 +42,24 @@
 #include "implicitizer/sdf/sdf_shape.hpp"
 
 namespace implicitizer {
+
+/// How a FastSdf sheet's estimate is tempered (FastSdf::build).
+struct FastSheetOptions {
+  /// > 0: |estimate| is capped at this times the box's largest half side, for a
+  /// surface whose first-order estimate is not to be trusted far from where it was
+  /// fitted (an approximation's piece, polynomial_leaf.hpp); 0: no cap.
+  double cap = 0;
+  /// For a sheet trimmed by a distance that is 0 on it (a patch's cover): where
+  /// |∇_u G| < FastSdf::kTrustFactor·γ_m·Σ_k S_k·r^k (S_k the sum of |g_α| over G's
+  /// terms of degree k, r = max|u_i|) the estimate is 0 and the trimming's distance
+  /// stands alone. G's rounding is at most γ_m·Ĝ(|u|) <= γ_m·Σ_k S_k·r^k (m = 2n + 4
+  /// roundings of 2^-23, docs/sdf.md §6), so where the estimate is kept its error from
+  /// that rounding is below 1/kTrustFactor of the box's half side: on the surface,
+  /// the estimate is below 1e-3 of it. Near a double curve (∇F = 0 on the surface) the
+  /// dropped estimate is the one that would have divided that rounding by a vanishing
+  /// gradient.
+  bool zero_where_untrusted = false;
+};
 
 /// A compiled fast-mode distance estimate.
 class FastSdf {
@@ -53,12 +72,15 @@ class FastSdf {
   /// Beyond this max-norm of u the box distance is returned (see the file comment).
   static constexpr double kFarField = 2;
 
+  /// See FastSheetOptions::zero_where_untrusted.
+  static constexpr double kTrustFactor = 2000;
+
   /// Frames `f` (three variables x, y, z in ring order) in `box` and compiles the
   /// value of `shape` (solid or sheet; automatic is decided by the caller,
   /// enclosure.hpp, and throws std::invalid_argument here). Throws InputError
   /// `constant_polynomial` (no surface), `invalid_box`.
   static FastSdf build(const Polynomial& f, const SceneBox& box, const Budget& budget = Budget(),
-                       SdfShape shape = SdfShape::solid);
+                       SdfShape shape = SdfShape::solid, FastSheetOptions sheet = {});
 
   /// The estimate at p = (x, y, z), computed exactly as the GLSL does (float) or in
   /// double with the double-rounded constants. Solid: negative where F < 0 in the
@@ -80,11 +102,14 @@ class FastSdf {
     const ValueAndGradient<T> r = program_.evaluate(u, v, w);
     const auto& g = r.gradient;
     const T length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-    const T d = r.value / std::max(length, T(kGradientFloor)) * h;
+    const T d = trusted(length, std::max(std::abs(u), std::max(std::abs(v), std::abs(w))))
+                    ? r.value / std::max(length, T(kGradientFloor)) * h
+                    : T(0);
     // Solid: F <= 0 clipped to the box, its surface inside the box and the caps where
     // the box's faces cut the solid. Sheet: the surface inside the box. Nothing
     // outside the box either way.
-    return std::max(shape_ == SdfShape::sheet ? std::abs(d) : d, box);
+    if (shape_ != SdfShape::sheet) return std::max(d, box);
+    return std::max(cap_ > 0 ? std::min(std::abs(d), pick<T>(cap_, cap_float_)) : std::abs(d), box);
   }
 
   /// `float FUNCTION(vec3 p) { ... }` with a comment line above it. Precondition:
@@ -108,9 +133,35 @@ class FastSdf {
     }
   }
 
+  // The float constants for a float run, the double ones otherwise (as pick()).
+  template <typename T>
+  static const auto& pick_vector(const std::vector<double>& d, const std::vector<float>& f) {
+    if constexpr (sizeof(T) == sizeof(float)) {
+      return f;
+    } else {
+      return d;
+    }
+  }
+
   SceneFrame frame_;
   PolynomialProgram program_;
   SdfShape shape_ = SdfShape::solid;
+  double cap_ = 0;       // the sheet's cap on |estimate| in space units (0: none)
+  float cap_float_ = 0;  // the same, as the GLSL states it
+  // The radial majorant's coefficients, kTrustFactor·γ_m·S_k (FastSheetOptions; empty:
+  // every estimate kept).
+  std::vector<double> trust_;
+  std::vector<float> trust_float_;
+
+  // Whether the estimate is kept at max|u_i| = r: |∇_u G| >= the majorant at r.
+  template <typename T>
+  bool trusted(T length, T r) const {
+    const auto& c = pick_vector<T>(trust_, trust_float_);
+    if (c.empty()) return true;
+    T bound = T(c.back());
+    for (std::size_t k = c.size() - 1; k-- > 0;) bound = bound * r + T(c[k]);
+    return length >= bound;
+  }
   std::array<double, 3> centre_{};
   std::array<float, 3> centre_float_{};
   double scale_ = 1, half_extent_ = 1;

@@ -34,6 +34,7 @@ struct SdfLeafSummary {
   std::int32_t degree = 0;
   bool trimmed = false;              ///< a parametric patch trimmed to its box (an unsigned sheet)
   SdfShape shape = SdfShape::solid;  ///< what the leaf's value describes (never automatic)
+  std::optional<TrimmingSummary> trimming;  ///< how, when trimmed
   /// With a tolerance: how the leaf was built (glsl_lines: the whole scene's).
   std::optional<ApproximationSummary> approximation;
 };
@@ -54,6 +55,12 @@ struct SdfAnswer {
   std::size_t nodes = 0;               ///< nodes of the scene (0: an implicit surface)
   std::vector<SceneUniform> uniforms;  ///< the scene's uniforms, in declaration order
   std::vector<SdfLeafSummary> leaves;  ///< the scene's polynomial leaves
+  /// How the patch of an input is trimmed (a scene's leaves say their own).
+  std::optional<TrimmingSummary> trimming;
+  /// An approximated sheet's side (sheet_side.hpp): `float NAME_side(vec3 p)`, whose
+  /// sign tells the sheet's sides apart; empty otherwise.
+  std::string side_glsl;
+  std::string side_function;  ///< NAME_side, with side_glsl
   /// An input with a tolerance (not a scene: its leaves say their own): how it was built.
   std::optional<ApproximationSummary> approximation;
 };
