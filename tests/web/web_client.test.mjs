@@ -467,7 +467,7 @@ test('typing an implicit equation directly draws it', async () => {
 test('the hyperbolic paraboloid, Enneper\'s surface and a bicubic patch are two-sided sheets', async (t) => {
   await page.click('#tab-parametric');
   await setMode('fast');
-  // Their exact equations (a tolerance draws an approximation, one-sided: next test).
+  // Their exact equations (a tolerance draws an approximation: next test).
   await page.fill('#tolerance', '');
   for (const name of ['hyperbolic_paraboloid', 'enneper', 'bicubic_patch']) {
     const frame = await currentFrame();
@@ -509,7 +509,8 @@ test('the hyperbolic paraboloid, Enneper\'s surface and a bicubic patch are two-
 });
 
 // Issue 19: a tolerance draws Enneper's surface from its approximation (at 1e-2 one
-// low-degree piece is shorter GLSL than the exact equation of degree 9); the bound
+// low-degree piece is shorter GLSL than the exact equation of degree 9), two-sided from
+// the side function its answer carries (issue 39); the bound
 // reached is shown beside the preview, and the image is the CPU renderer's of the same
 // request, and close to the exact patch's. The bicubic patch keeps its exact equation
 // at the page's default 1e-3 (shorter than any approximation) and says so.
@@ -520,7 +521,7 @@ test('Enneper\'s surface with a tolerance renders its approximation and shows th
   let frame = await currentFrame();
   const started = Date.now();
   await page.selectOption('#examples', 'enneper');
-  await waitForFrame(frame, (d) => d.function === 'enneper_sdf' && d.mode === 'fast' && d.sides === 'one');
+  await waitForFrame(frame, (d) => d.function === 'enneper_sdf' && d.mode === 'fast' && d.sides === 'two');
   t.diagnostic(`enneper at 1e-2: request to finished image ${Date.now() - started} ms`);
   const text = await page.textContent('#approximation');
   t.diagnostic(text);

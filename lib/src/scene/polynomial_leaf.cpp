@@ -344,7 +344,7 @@ PolynomialLeaf PolynomialLeaf::build_cheapest(std::optional<PolynomialLeaf> exac
   const auto compile_accepted = [&](const std::vector<ApproximationPiece>& accepted) {
     while (leaf.pieces_.size() < accepted.size()) {
       leaf.pieces_.push_back(
-          build_piece(accepted[leaf.pieces_.size()], parametrization, domain, frame_box, mode, budget, field));
+          build_piece(accepted[leaf.pieces_.size()], parametrization, frame_box, mode, budget, field));
       lines += leaf.piece_glsl_lines(leaf.pieces_.size() - 1);
     }
   };
@@ -394,8 +394,7 @@ PolynomialLeaf PolynomialLeaf::build_cheapest(std::optional<PolynomialLeaf> exac
 }
 
 PolynomialLeaf::Piece PolynomialLeaf::build_piece(const ApproximationPiece& source,
-                                                  const Parametrization& parametrization,
-                                                  const ParameterDomain& domain, const SceneBox& frame_box,
+                                                  const Parametrization& parametrization, const SceneBox& frame_box,
                                                   SdfMode mode, const Budget& budget, const std::string& field) {
   budget.check("approximated leaf");
   // Each piece in the box fitted to X(S_k), as a patch's frame is to X(D): its own
@@ -424,21 +423,12 @@ PolynomialLeaf::Piece PolynomialLeaf::build_piece(const ApproximationPiece& sour
   } catch (const InputError& e) {
     throw at_field(e, field, e.code() == "invalid_box" ? "box" : "");
   }
-  // A polytope when the approximation measured its kept zeros there and the piece
-  // touches no edge of D; else a cover. A polytope keeps q's zeros within the
-  // tolerance of X(S) but not sharp to D's edges: its planes let q's continuation past
-  // an edge show as a halo a pixel wide (Enneper's surface at the page's tolerance:
-  // hit-mask IoU 0.975 against the exact equation, 1.000 with covers; docs/sdf.md).
-  const bool inner = [&] {
-    for (std::size_t j = 0; j < domain.intervals.size(); ++j) {
-      if (source.domain.intervals[j].first == domain.intervals[j].first ||
-          source.domain.intervals[j].second == domain.intervals[j].second) {
-        return false;
-      }
-    }
-    return true;
-  }();
-  if (source.polytope && inner) {
+  // A polytope when the approximation measured its kept zeros there, else a cover.
+  // A polytope keeps q's zeros within the tolerance of X(S), not sharp to D's edges:
+  // its chords let q's continuation past an edge show as a halo up to a pixel wide
+  // (docs/sdf.md, "Trimming a piece to a polytope"); a cover there would cost about
+  // three times its lines and eight times its evaluation on tp_33 at 1e-3.
+  if (source.polytope) {
     piece.polytope.emplace(*source.polytope, source.box);
   } else {
     piece.cover = PatchCover::build(parametrization, source.domain, source.equation, box, budget);

@@ -50,7 +50,8 @@
 /// covering the rounding of p − o and of the three dot products (at most 4 roundings
 /// of relative 2^-23 on at most √3·|p − o|_∞), the rest relative and inside the
 /// final shrink. A leaf without a tangent frame (X_s × X_t vanishing at its centre) or
-/// with a slab bound beyond float's range keeps its box alone (stats().box_leaves).
+/// with a slab bound beyond float's range keeps its box alone (stats().box_leaves); its
+/// slabs are then zero, 0 <= 0·x <= 0, which the GLSL leaves out.
 ///
 /// Edges. Let σ be how far the sub-patch's edge on ∂D lies inside the facing slab
 /// face (the bound of w·X over that edge against the face), and θ the angle between
@@ -177,7 +178,7 @@ class PatchCover {
   /// literals. Precondition: FUNCTION is a valid GLSL identifier.
   std::string to_glsl(const std::string& function) const;
   /// The other global names to_glsl(FUNCTION) defines: FUNCTION + each suffix.
-  static std::vector<std::string> glsl_suffixes() { return {"_d2", "_leaf"}; }
+  static std::vector<std::string> glsl_suffixes() { return {"_d2", "_leaf", "_leaf2", "_leaf1"}; }
 
   /// What build() did.
   const PatchCoverStats& stats() const { return stats_; }

@@ -267,10 +267,10 @@ class PolynomialLeaf {
                                        const SceneBox& frame_box, double tolerance, SdfMode mode, const Budget& budget,
                                        const std::string& field);
   // One approximation piece: q_k's distance in its own fitted box cut to the leaf's
-  // frame box, trimmed to X(S_k)'s cover or (a piece inside D, off its edges) its polytope.
+  // frame box, trimmed to X(S_k)'s polytope where the approximation kept one, else its cover.
   static Piece build_piece(const ApproximationPiece& source, const Parametrization& parametrization,
-                           const ParameterDomain& domain, const SceneBox& frame_box, SdfMode mode,
-                           const Budget& budget, const std::string& field);
+                           const SceneBox& frame_box, SdfMode mode, const Budget& budget,
+                           const std::string& field);
 
   Polynomial equation_;
   std::vector<Piece> pieces_;  // one, or an approximation's
