@@ -729,6 +729,7 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
     cover.float_.cluster_lo.push_back(clo);
     cover.float_.cluster_hi.push_back(chi);
   }
+  cover.float_.reach2 = static_cast<float>(4 * params.sharp_value * params.sharp_value * h * h);
   cover.copy_boxes_to_double();
   return cover;
 }
@@ -750,6 +751,7 @@ void PatchCover::copy_boxes_to_double() {
   double_.slab_hi = to_double(float_.slab_hi);
   float_.slack = static_cast<float>(kSlabSlack);
   double_.slack = kSlabSlackDouble;
+  double_.reach2 = float_.reach2;
   double_.cluster_lo = to_double(float_.cluster_lo);
   double_.cluster_hi = to_double(float_.cluster_hi);
   float_.hull_lo = lo();
@@ -813,6 +815,7 @@ std::string PatchCover::to_glsl(const std::string& function) const {
       "float " + f + "_leaf(vec3 p, float best, vec3 lo, vec3 hi, vec3 w0, vec3 w1, vec3 w2, vec3 slo, vec3 shi) {\n"
       "  float a = " + f + "_d2(p, lo, hi);\n"
       "  if (!(a < best)) return best;\n"
+      "  if (!(a < " + format_glsl_float(float_.reach2) + ")) return a;\n"
       "  vec3 d = p - lo;\n"
       "  vec3 q = vec3(dot(d, w0), dot(d, w1), dot(d, w2));\n"
       "  vec3 s = max(slo - q, q - shi);\n"
@@ -823,6 +826,7 @@ std::string PatchCover::to_glsl(const std::string& function) const {
       "float " + f + "_leaf2(vec3 p, float best, vec3 lo, vec3 hi, vec3 w1, vec3 w2, vec2 slo, vec2 shi) {\n"
       "  float a = " + f + "_d2(p, lo, hi);\n"
       "  if (!(a < best)) return best;\n"
+      "  if (!(a < " + format_glsl_float(float_.reach2) + ")) return a;\n"
       "  vec3 d = p - lo;\n"
       "  vec2 q = vec2(dot(d, w1), dot(d, w2));\n"
       "  vec2 s = max(slo - q, q - shi);\n"
@@ -833,6 +837,7 @@ std::string PatchCover::to_glsl(const std::string& function) const {
       "float " + f + "_leaf1(vec3 p, float best, vec3 lo, vec3 hi, vec3 w, float slo, float shi) {\n"
       "  float a = " + f + "_d2(p, lo, hi);\n"
       "  if (!(a < best)) return best;\n"
+      "  if (!(a < " + format_glsl_float(float_.reach2) + ")) return a;\n"
       "  vec3 d = p - lo;\n"
       "  float q = dot(d, w);\n"
       "  float t = max(slo - q, q - shi) - " + format_glsl_float(float_.slack) +

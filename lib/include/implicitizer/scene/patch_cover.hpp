@@ -219,6 +219,7 @@ class PatchCover {
     std::vector<Vec3<T>> w0, w1, w2;              // each leaf's slab normals (0: no slabs)
     std::vector<Vec3<T>> slab_lo, slab_hi;        // its slab bounds, relative to lo
     T slack = 0;                                  // kSlabSlack or kSlabSlackDouble
+    T reach2 = 0;                                 // slabs only for leaf boxes nearer than sqrt(reach2)
     std::vector<Vec3<T>> cluster_lo, cluster_hi;  // one per cluster
     Vec3<T> hull_lo{}, hull_hi{};                 // the box around every leaf box
     T shrink = 1;
@@ -233,11 +234,15 @@ class PatchCover {
   }
 
   // min(best, leaf j's squared value): its box distance, and when that is below best
-  // the larger of it and the square of its slab excess less the slack.
+  // and below the slabs' reach the larger of it and the square of its slab excess less
+  // the slack. Beyond the reach (2·sharp_value·h) the box alone already gives a value
+  // above the edge criterion's threshold, and a GPU evaluates slabs only for the few
+  // leaves a point is that near to.
   template <typename T>
   static T leaf_squared(const Boxes<T>& b, std::size_t j, const Vec3<T>& p, T best) {
     const T a = squared_distance(p, b.lo[j], b.hi[j]);
     if (!(a < best)) return best;
+    if (!(a < b.reach2)) return a;
     const Vec3<T> d = p - b.lo[j];
     const Vec3<T> q{dot(d, b.w0[j]), dot(d, b.w1[j]), dot(d, b.w2[j])};
     const Vec3<T> s = max(b.slab_lo[j] - q, q - b.slab_hi[j]);
