@@ -66,7 +66,9 @@
 /// cluster_size (default ⌈√leaves⌉) consecutive leaves (the last one padded by repeating its last leaf),
 /// each with the box around its leaves. distance_lower_bound() walks the clusters,
 /// opens only those closer than the best leaf so far, evaluates a leaf's slabs only
-/// when its box is closer than the best, and returns as soon as a leaf is within |d|
+/// when its box is closer than the best and within 2·sharp_value·h (farther, the box
+/// alone is above the edge criterion's threshold), and returns as soon as a leaf is
+/// within |d|
 /// (the cluster's and the leaf's box distances are at most the leaf's value, so a
 /// skipped leaf could not have lowered the minimum). Boxes are stored rounded outwards (float and double; corners beyond
 /// float's range clamped to ±FLT_MAX, which only shortens distances), squared
