@@ -14,7 +14,9 @@
 // shared with whatever else runs.
 //
 //   node bench/web/frame_time.mjs [--surface tp_33] [--tolerance 0,1e-3] [--size 128] [--frames 2]
-//   (from the repository root, after the build and tests/web's npm ci)
+//   node bench/web/frame_time.mjs --requests '[{"name": "enneper", "x": ..., "box": [...]}]'
+//   (from the repository root, after the build and tests/web's npm ci; --requests
+//   measures the given /v1/sdf requests instead, e.g. the page's examples in their boxes)
 import fs from 'node:fs';
 import path from 'node:path';
 import { launchChromium, sharedDir, startServer, stopServer } from '../../tests/web/harness.mjs';
@@ -23,6 +25,7 @@ function option(name, fallback) {
   const i = process.argv.indexOf(name);
   return i > 0 && i + 1 < process.argv.length ? process.argv[i + 1] : fallback;
 }
+const requests = JSON.parse(option('--requests', '[]'));
 const surfaces = option('--surface', 'tp_33').split(',');
 const tolerances = option('--tolerance', '0,1e-3').split(',').map(Number);
 const size = Number(option('--size', '128'));
@@ -111,7 +114,12 @@ try {
   page.setDefaultTimeout(0);
   console.log('| surface | EPS | GLSL lines | compile + link (ms) | frame (ms) | surface pixels |');
   console.log('|---|---|---|---|---|---|');
-  for (const name of surfaces) {
+  for (const request of requests) {
+    const r = await page.evaluate(measureInPage, { request: { mode: 'fast', timeout_ms: 60000, ...request }, size, frames });
+    if (r.error) console.log(`| ${request.name} | request | error: ${r.error.slice(0, 200)} | | | |`);
+    else console.log(`| ${request.name} | request | ${r.lines} | ${r.compileMs.toFixed(0)} | ${r.frameMs.toFixed(0)} | ${r.surfacePixels} |`);
+  }
+  for (const name of requests.length ? [] : surfaces) {
     const s = suite.find((e) => e.name === name);
     if (!s) throw new Error(`no surface ${name}`);
     for (const tolerance of tolerances) {

@@ -318,10 +318,6 @@ struct Node {
   std::vector<std::size_t> children;
   float largest_side = 0;
   Slabs slabs;
-  // The slabs stated (bit i: slab i): all three. Dropping the normal slab (a GPU pays
-  // for every slab of every leaf a group of pixels opens) left points of Z past the
-  // edges of tri_quadratic, tp_22 and tri_quartic inside other leaves' boxes.
-  unsigned edge_slabs = 0;
 };
 
 // What every node's construction reads.
@@ -456,7 +452,6 @@ Node make_node(const CoverContext& ctx, ParameterDomain domain, bool with_slabs 
   }
   // Slabs relative to a clamped corner could overflow their own arithmetic.
   if (with_slabs && !clamped) node.slabs = make_slabs(ctx, node.domain, node.lo);
-  if (node.slabs.used) node.edge_slabs = 0b111U;
   return node;
 }
 
@@ -566,13 +561,13 @@ bool continues_in_frame(const CoverContext& ctx, const Node& node, std::size_t j
 // inside D's edge on that side, about g·|w·X_j| in the facing slab's coordinate; the
 // node's sub-patch reaches past its own side by the overshoot σ (the bound of w·X over
 // that side against the face), so the face lies σ − g·|w·X_j| past D's edge, which
-// the criterion bounds by max(0.1·sharp_reach, sharp_reach·sin θ − 1.2·sharp_value)·h.
+// the criterion bounds by (sharp_reach − 1.2·sharp_value)·h.
 // An edge node has g = 0; an inner node's side is checked only when the slab's width
 // (which bounds σ) exceeds 0.9·g·|w·X_j|. Returns the parameters to halve, as bits:
 // the one along each blunt side (σ grows with the square of the side's length, and
 // halving across it would only add inner leaves); 0: none.
-unsigned blunt_edge(const CoverContext& ctx, Node& node, const ParameterDomain& domain, const Box& frame, double h,
-                const PatchCoverParams& params) {
+unsigned blunt_edge(const CoverContext& ctx, const Node& node, const ParameterDomain& domain, const Box& frame,
+                    double h, const PatchCoverParams& params) {
   // Without a tangent frame (a singular point) smaller boxes would be all there is,
   // and a singular edge would split to the cap: the leaf keeps its box (box_leaves).
   if (!node.slabs.used) return 0;
@@ -715,21 +710,17 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
       const Node& n = nodes[order[j]];
       cover.float_.lo.push_back(n.lo);
       cover.float_.hi.push_back(n.hi);
-      // Only the slabs held to an edge (Node::edge_slabs); the others read 0 <= 0 <= 0.
-      const auto kept = [&](std::size_t i) { return ((n.edge_slabs >> i) & 1U) != 0; };
-      const Vec3<float> zero{0, 0, 0};
-      cover.float_.w0.push_back(kept(0) ? n.slabs.w[0] : zero);
-      cover.float_.w1.push_back(kept(1) ? n.slabs.w[1] : zero);
-      cover.float_.w2.push_back(kept(2) ? n.slabs.w[2] : zero);
-      cover.float_.slab_lo.push_back({kept(0) ? n.slabs.lo.x : 0, kept(1) ? n.slabs.lo.y : 0, kept(2) ? n.slabs.lo.z : 0});
-      cover.float_.slab_hi.push_back({kept(0) ? n.slabs.hi.x : 0, kept(1) ? n.slabs.hi.y : 0, kept(2) ? n.slabs.hi.z : 0});
+      cover.float_.w0.push_back(n.slabs.w[0]);
+      cover.float_.w1.push_back(n.slabs.w[1]);
+      cover.float_.w2.push_back(n.slabs.w[2]);
+      cover.float_.slab_lo.push_back(n.slabs.lo);
+      cover.float_.slab_hi.push_back(n.slabs.hi);
       clo = {std::min(clo.x, n.lo.x), std::min(clo.y, n.lo.y), std::min(clo.z, n.lo.z)};
       chi = {std::max(chi.x, n.hi.x), std::max(chi.y, n.hi.y), std::max(chi.z, n.hi.z)};
     }
     cover.float_.cluster_lo.push_back(clo);
     cover.float_.cluster_hi.push_back(chi);
   }
-  cover.float_.reach2 = static_cast<float>(4 * params.sharp_value * params.sharp_value * h * h);
   cover.copy_boxes_to_double();
   return cover;
 }
@@ -751,7 +742,6 @@ void PatchCover::copy_boxes_to_double() {
   double_.slab_hi = to_double(float_.slab_hi);
   float_.slack = static_cast<float>(kSlabSlack);
   double_.slack = kSlabSlackDouble;
-  double_.reach2 = float_.reach2;
   double_.cluster_lo = to_double(float_.cluster_lo);
   double_.cluster_hi = to_double(float_.cluster_hi);
   float_.hull_lo = lo();
@@ -814,67 +804,23 @@ std::string PatchCover::to_glsl(const std::string& function) const {
       "}\n"
       "float " + f + "_leaf(vec3 p, float best, vec3 lo, vec3 hi, vec3 w0, vec3 w1, vec3 w2, vec3 slo, vec3 shi) {\n"
       "  float a = " + f + "_d2(p, lo, hi);\n"
-      "  if (!(a < best)) return best;\n"
-      "  if (!(a < " + format_glsl_float(float_.reach2) + ")) return a;\n"
       "  vec3 d = p - lo;\n"
       "  vec3 q = vec3(dot(d, w0), dot(d, w1), dot(d, w2));\n"
       "  vec3 s = max(slo - q, q - shi);\n"
-      "  float t = max(max(s.x, s.y), s.z) - " + format_glsl_float(float_.slack) +
-      " * max(max(abs(d.x), abs(d.y)), abs(d.z));\n"
-      "  return t > 0.0 ? min(best, max(a, t * t)) : a;\n"
-      "}\n"
-      "float " + f + "_leaf2(vec3 p, float best, vec3 lo, vec3 hi, vec3 w1, vec3 w2, vec2 slo, vec2 shi) {\n"
-      "  float a = " + f + "_d2(p, lo, hi);\n"
-      "  if (!(a < best)) return best;\n"
-      "  if (!(a < " + format_glsl_float(float_.reach2) + ")) return a;\n"
-      "  vec3 d = p - lo;\n"
-      "  vec2 q = vec2(dot(d, w1), dot(d, w2));\n"
-      "  vec2 s = max(slo - q, q - shi);\n"
-      "  float t = max(s.x, s.y) - " + format_glsl_float(float_.slack) +
-      " * max(max(abs(d.x), abs(d.y)), abs(d.z));\n"
-      "  return t > 0.0 ? min(best, max(a, t * t)) : a;\n"
-      "}\n"
-      "float " + f + "_leaf1(vec3 p, float best, vec3 lo, vec3 hi, vec3 w, float slo, float shi) {\n"
-      "  float a = " + f + "_d2(p, lo, hi);\n"
-      "  if (!(a < best)) return best;\n"
-      "  if (!(a < " + format_glsl_float(float_.reach2) + ")) return a;\n"
-      "  vec3 d = p - lo;\n"
-      "  float q = dot(d, w);\n"
-      "  float t = max(slo - q, q - shi) - " + format_glsl_float(float_.slack) +
-      " * max(max(abs(d.x), abs(d.y)), abs(d.z));\n"
-      "  return t > 0.0 ? min(best, max(a, t * t)) : a;\n"
+      "  float t = max(max(max(s.x, s.y), s.z) - " + format_glsl_float(float_.slack) +
+      " * max(max(abs(d.x), abs(d.y)), abs(d.z)), 0.0);\n"
+      "  return min(best, max(a, t * t));\n"
       "}\n"
       "float " + f + "(vec3 p, float d) {\n"
       "  float ad = abs(d);\n"
       "  float d2 = ad * ad;\n"
       "  float best = " + format_glsl_float(static_cast<float>(kFarSquared)) + ";\n";
   const auto zero = [](const Vec3<float>& v) { return v.x == 0 && v.y == 0 && v.z == 0; };
-  const auto component = [](const Vec3<float>& v, int i) { return i == 0 ? v.x : (i == 1 ? v.y : v.z); };
   for (std::size_t c = 0; c < clusters; ++c) {
     out += "  if (" + f + "_d2(p, " + vec3_literal(float_.cluster_lo[c]) + ", " + vec3_literal(float_.cluster_hi[c]) +
            ") < best) {\n";
     for (std::size_t j = c * cluster_size_; j < std::min((c + 1) * cluster_size_, stats_.leaves); ++j) {
-      const Vec3<float>* w[3] = {&float_.w0[j], &float_.w1[j], &float_.w2[j]};
-      int slabs = 0, only = 0;
-      for (int i = 0; i < 3; ++i) {
-        if (!zero(*w[i])) {
-          ++slabs;
-          only = i;
-        }
-      }
-      if (slabs == 1) {
-        // One slab: its dot product alone (the zero ones add nothing: patch_cover.hpp).
-        out += "    best = " + f + "_leaf1(p, best, " + vec3_literal(float_.lo[j]) + ", " +
-               vec3_literal(float_.hi[j]) + ", " + vec3_literal(*w[only]) + ", " +
-               format_glsl_float(component(float_.slab_lo[j], only)) + ", " +
-               format_glsl_float(component(float_.slab_hi[j], only)) + ");\n";
-      } else if (slabs == 2 && zero(*w[0])) {
-        // A surface's two in-plane slabs (the normal one is not stated).
-        out += "    best = " + f + "_leaf2(p, best, " + vec3_literal(float_.lo[j]) + ", " +
-               vec3_literal(float_.hi[j]) + ", " + vec3_literal(*w[1]) + ", " + vec3_literal(*w[2]) + ", vec2(" +
-               format_glsl_float(float_.slab_lo[j].y) + ", " + format_glsl_float(float_.slab_lo[j].z) + "), vec2(" +
-               format_glsl_float(float_.slab_hi[j].y) + ", " + format_glsl_float(float_.slab_hi[j].z) + "));\n";
-      } else if (slabs > 1) {
+      if (!(zero(float_.w0[j]) && zero(float_.w1[j]) && zero(float_.w2[j]))) {
         out += "    best = " + f + "_leaf(p, best, " + vec3_literal(float_.lo[j]) + ", " + vec3_literal(float_.hi[j]) +
                ", " + vec3_literal(float_.w0[j]) + ", " + vec3_literal(float_.w1[j]) + ", " +
                vec3_literal(float_.w2[j]) + ", " + vec3_literal(float_.slab_lo[j]) + ", " +

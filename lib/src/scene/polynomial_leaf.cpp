@@ -426,8 +426,8 @@ PolynomialLeaf::Piece PolynomialLeaf::build_piece(const ApproximationPiece& sour
   // A polytope when the approximation measured its kept zeros there, else a cover.
   // A polytope keeps q's zeros within the tolerance of X(S), not sharp to D's edges:
   // its chords let q's continuation past an edge show as a halo up to a pixel wide
-  // (docs/sdf.md, "Trimming a piece to a polytope"); a cover there would cost about
-  // three times its lines and eight times its evaluation on tp_33 at 1e-3.
+  // (docs/sdf.md, "Trimming a piece to a polytope"); a cover there costs several times
+  // the polytope's lines and evaluation, what the tolerance is there to avoid.
   if (source.polytope) {
     piece.polytope.emplace(*source.polytope, source.box);
   } else {

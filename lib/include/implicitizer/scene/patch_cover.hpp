@@ -54,21 +54,20 @@
 /// slabs are then zero, 0 <= 0·x <= 0, which the GLSL leaves out.
 ///
 /// Edges. Let σ be how far the sub-patch's edge on ∂D lies inside the facing slab
-/// face (the bound of w·X over that edge against the face), and θ the angle between
-/// X_s and X_t. A point of Z a distance d past the edge continues the patch across it,
-/// so its slab excess is about d·sin θ − σ; a leaf on an edge of D across which Z
-/// continues inside the frame (sampled: the continuation a sharp_reach·h step past
-/// the edge, at points about 0.01·h apart, lies within 1.05·sharp_value·h of the frame box) is split until σ <= max(0.1·sharp_reach,
-/// sharp_reach·sin θ − 1.2·sharp_value)·h, so that points of Z sharp_reach·h past
-/// the edge get values above sharp_value·h (docs/sdf.md, "Patches", measures it).
+/// face (the bound of w·X over that edge against the face). A point of Z a distance d
+/// past the edge continues the patch across it; the face contains the normal w_n, so
+/// the point's excess over it is its distance to the face within the tangent plane,
+/// about d − σ. A leaf on an edge of D across which Z continues inside the frame
+/// (sampled: the continuation a sharp_reach·h step past the edge, at points about
+/// 0.01·h apart, lies within 1.05·sharp_value·h of the frame box) is halved along that
+/// edge until σ <= (sharp_reach − 1.2·sharp_value)·h, so that points of Z sharp_reach·h
+/// past the edge get values above sharp_value·h (docs/sdf.md, "Patches", measures it).
 ///
 /// Evaluation. The leaves, in quadtree order, are grouped in clusters of
 /// cluster_size (default ⌈√leaves⌉) consecutive leaves (the last one padded by repeating its last leaf),
 /// each with the box around its leaves. distance_lower_bound() walks the clusters,
 /// opens only those closer than the best leaf so far, evaluates a leaf's slabs only
-/// when its box is closer than the best and within 2·sharp_value·h (farther, the box
-/// alone is above the edge criterion's threshold), and returns as soon as a leaf is
-/// within |d|
+/// when its box is closer than the best, and returns as soon as a leaf is within |d|
 /// (the cluster's and the leaf's box distances are at most the leaf's value, so a
 /// skipped leaf could not have lowered the minimum). Boxes are stored rounded outwards (float and double; corners beyond
 /// float's range clamped to ±FLT_MAX, which only shortens distances), squared
@@ -180,7 +179,7 @@ class PatchCover {
   /// literals. Precondition: FUNCTION is a valid GLSL identifier.
   std::string to_glsl(const std::string& function) const;
   /// The other global names to_glsl(FUNCTION) defines: FUNCTION + each suffix.
-  static std::vector<std::string> glsl_suffixes() { return {"_d2", "_leaf", "_leaf2", "_leaf1"}; }
+  static std::vector<std::string> glsl_suffixes() { return {"_d2", "_leaf"}; }
 
   /// What build() did.
   const PatchCoverStats& stats() const { return stats_; }
@@ -221,7 +220,6 @@ class PatchCover {
     std::vector<Vec3<T>> w0, w1, w2;              // each leaf's slab normals (0: no slabs)
     std::vector<Vec3<T>> slab_lo, slab_hi;        // its slab bounds, relative to lo
     T slack = 0;                                  // kSlabSlack or kSlabSlackDouble
-    T reach2 = 0;                                 // slabs only for leaf boxes nearer than sqrt(reach2)
     std::vector<Vec3<T>> cluster_lo, cluster_hi;  // one per cluster
     Vec3<T> hull_lo{}, hull_hi{};                 // the box around every leaf box
     T shrink = 1;
@@ -235,22 +233,22 @@ class PatchCover {
     return m.x * m.x + m.y * m.y + m.z * m.z;
   }
 
-  // min(best, leaf j's squared value): its box distance, and when that is below best
-  // and below the slabs' reach the larger of it and the square of its slab excess less
-  // the slack. Beyond the reach (2·sharp_value·h) the box alone already gives a value
-  // above the edge criterion's threshold, and a GPU evaluates slabs only for the few
-  // leaves a point is that near to.
+  // min(best, leaf j's squared value): the larger of its box distance and the square of
+  // its slab excess less the slack (0 when negative). The GLSL computes the same without
+  // a branch, since SwiftShader paid far more for a return inside the leaf's function
+  // than for its arithmetic (docs/sdf.md, "Patches"); here a leaf whose box is no nearer
+  // than best is skipped, which gives the same min.
   template <typename T>
   static T leaf_squared(const Boxes<T>& b, std::size_t j, const Vec3<T>& p, T best) {
     const T a = squared_distance(p, b.lo[j], b.hi[j]);
     if (!(a < best)) return best;
-    if (!(a < b.reach2)) return a;
     const Vec3<T> d = p - b.lo[j];
     const Vec3<T> q{dot(d, b.w0[j]), dot(d, b.w1[j]), dot(d, b.w2[j])};
     const Vec3<T> s = max(b.slab_lo[j] - q, q - b.slab_hi[j]);
-    const T t = std::max(std::max(s.x, s.y), s.z) -
-                b.slack * std::max(std::max(std::abs(d.x), std::abs(d.y)), std::abs(d.z));
-    return t > 0 ? std::min(best, std::max(a, t * t)) : a;
+    const T t = std::max(std::max(std::max(s.x, s.y), s.z) -
+                             b.slack * std::max(std::max(std::abs(d.x), std::abs(d.y)), std::abs(d.z)),
+                         T(0));
+    return std::min(best, std::max(a, t * t));
   }
 
   template <typename T>
