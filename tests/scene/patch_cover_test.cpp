@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -192,6 +193,10 @@ TEST(PatchCover, NeverAboveTheDistanceToThePatchOrItsBoxes) {
       const float value = c.cover->distance_lower_bound(p, 0.0f);
       const long double leaves = exact_leaf_distance(*c.cover, p);
       EXPECT_LE(value, leaves) << k.name;
+      // And no lower than the leaves' rounding and slack: the walk skips no leaf that
+      // would set the minimum, and its start (the nearest cluster point) is no lower.
+      const float reach = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.0f});
+      EXPECT_GE(value, leaves * (1 - 0x1p-12L) - 0x1p-16L * reach) << k.name;
       // The leaves' boxes and slabs contain the patch, so the sample is never closer
       // than they are.
       EXPECT_LE(value, sample.distance({p.x, p.y, p.z})) << k.name;

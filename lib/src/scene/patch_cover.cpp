@@ -320,12 +320,23 @@ struct Node {
   Slabs slabs;
 };
 
+// A point of Z a step of sharp_reach·h past an edge of D, and its parameter along
+// that edge.
+struct BeyondPoint {
+  V point;
+  double along;
+};
+
 // What every node's construction reads.
 struct CoverContext {
   const Parametrization& parametrization;
   DoublePatch patch;
   const Budget& budget;
   PatchBoundsParams bounds_params;
+  const ParameterDomain& domain;  // D, the whole domain
+  // Per edge of a surface's D (s = s0, s = s1, t = t0, t = t1): Z a step past it,
+  // inside the frame (beside_edges()).
+  std::array<std::vector<BeyondPoint>, 4> beyond{};
 };
 
 std::vector<double> centre_of(const ParameterDomain& domain) {
@@ -345,30 +356,59 @@ V partial(const DoublePatch& patch, std::vector<double> u, std::size_t j, double
 
 V cross(const V& a, const V& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 
-// The slab normals at the centre of `domain`: for a surface w_n ∥ X_s × X_t, w_s ⊥
-// X_t, w_t ⊥ X_s (in the tangent plane); for a curve its tangent and two normals
-// (in the plane z = 0 and e_z for a plane curve). None where the frame degenerates.
+std::optional<V> unit(const V& v) {
+  const double l = length(v);
+  if (!std::isfinite(l) || l <= 0) return std::nullopt;
+  return v / l;
+}
+
+// X_s and X_t at `u` (steps relative to `domain`'s widths), and the unit normal there;
+// no normal where |X_s × X_t| is far below |X_s|·|X_t| (no tangent plane worth the name).
+struct SurfaceFrame {
+  V xs, xt;
+  std::optional<V> n;
+};
+SurfaceFrame surface_frame(const CoverContext& ctx, const ParameterDomain& domain, const std::vector<double>& u) {
+  SurfaceFrame f;
+  f.xs = partial(ctx.patch, u, 0, to_mpq(domain.intervals[0].second - domain.intervals[0].first).get_d() * 1e-4);
+  f.xt = partial(ctx.patch, u, 1, to_mpq(domain.intervals[1].second - domain.intervals[1].first).get_d() * 1e-4);
+  const V cross_st = cross(f.xs, f.xt);
+  if (length(cross_st) > 1e-9 * length(f.xs) * length(f.xt)) f.n = unit(cross_st);
+  return f;
+}
+
+// The slab normals of the leaf over `domain`: for a surface w_n ∥ X_s × X_t at its
+// centre, and the in-plane normals w_s ⊥ X_t, w_t ⊥ X_s taken at the middle of the
+// leaf's side nearer D's edge in that parameter (at the centre when the leaf spans D
+// in it): a leaf on an edge is halved along the edge only and stays deep across it,
+// so at its centre X_t would differ from the edge's by X_st times that depth, a face
+// tilted against the edge to first order, while at the side's middle the face follows
+// the edge up to its curvature. For a curve its tangent and two normals (in the plane
+// z = 0 and e_z for a plane curve). None where the frame degenerates at the centre.
 std::optional<std::array<V, 3>> tangent_frame(const CoverContext& ctx, const ParameterDomain& domain,
                                               bool plane_curve) {
   const std::vector<double> c = centre_of(domain);
-  std::vector<V> d;
-  for (std::size_t j = 0; j < c.size(); ++j) {
-    const double width = to_mpq(domain.intervals[j].second - domain.intervals[j].first).get_d();
-    d.push_back(partial(ctx.patch, c, j, width * 1e-4));
-  }
-  const auto unit = [](const V& v) -> std::optional<V> {
-    const double l = length(v);
-    if (!std::isfinite(l) || l <= 0) return std::nullopt;
-    return v / l;
-  };
   std::optional<V> a, b, n;
-  if (d.size() == 2) {
-    n = unit(cross(d[0], d[1]));
-    // |X_s × X_t| far below |X_s|·|X_t|: no tangent plane worth the name.
-    if (!n || length(cross(d[0], d[1])) <= 1e-9 * length(d[0]) * length(d[1])) return std::nullopt;
-    a = unit(cross(d[1], *n));
-    b = unit(cross(*n, d[0]));
+  if (c.size() == 2) {
+    const SurfaceFrame centre = surface_frame(ctx, domain, c);
+    n = centre.n;
+    if (!n) return std::nullopt;
+    const auto side_frame = [&](std::size_t j) {
+      const auto& [lo, hi] = domain.intervals[j];
+      const auto& [edge_lo, edge_hi] = ctx.domain.intervals[j];
+      // Spanning D, both sides lie on edges: the centre serves both alike.
+      if (lo == edge_lo && hi == edge_hi) return centre;
+      std::vector<double> u = c;
+      u[j] = to_mpq(lo - edge_lo <= edge_hi - hi ? lo : hi).get_d();
+      const SurfaceFrame side = surface_frame(ctx, domain, u);
+      return side.n ? side : centre;
+    };
+    const SurfaceFrame s_side = side_frame(0), t_side = side_frame(1);
+    a = unit(cross(s_side.xt, *s_side.n));
+    b = unit(cross(*t_side.n, t_side.xs));
   } else {
+    const double width = to_mpq(domain.intervals[0].second - domain.intervals[0].first).get_d();
+    const std::vector<V> d{partial(ctx.patch, c, 0, width * 1e-4)};
     n = unit(d[0]);
     if (!n) return std::nullopt;
     if (plane_curve) {
@@ -556,6 +596,66 @@ bool continues_in_frame(const CoverContext& ctx, const Node& node, std::size_t j
   return false;
 }
 
+// Z a step of sharp_reach·h past each edge of a surface's D, at 1025 points along
+// the edge (about 0.001 of its length apart), those the frame keeps (within
+// 1.05·sharp_value·h of it, as continues_in_frame() asks).
+std::array<std::vector<BeyondPoint>, 4> beside_edges(const CoverContext& ctx, const Box& frame, double h,
+                                                     const PatchCoverParams& params) {
+  constexpr int kSamples = 1024;
+  std::array<std::vector<BeyondPoint>, 4> out;
+  for (std::size_t j = 0; j < 2; ++j) {
+    const std::size_t other = 1 - j;
+    const double width = to_mpq(ctx.domain.intervals[j].second - ctx.domain.intervals[j].first).get_d();
+    const double lo = to_mpq(ctx.domain.intervals[other].first).get_d();
+    const double hi = to_mpq(ctx.domain.intervals[other].second).get_d();
+    for (const bool upper : {false, true}) {
+      ctx.budget.check(kWhere);
+      std::vector<double> u(2);
+      u[j] = to_mpq(upper ? ctx.domain.intervals[j].second : ctx.domain.intervals[j].first).get_d();
+      for (int k = 0; k <= kSamples; ++k) {
+        u[other] = lo + (hi - lo) * k / kSamples;
+        const double speed = length(partial(ctx.patch, u, j, width * 1e-4));
+        if (!std::isfinite(speed) || speed <= 0) continue;
+        std::vector<double> beyond = u;
+        beyond[j] += (upper ? 1 : -1) * params.sharp_reach * h / speed;
+        const V q = ctx.patch.at(beyond);
+        if (!std::isfinite(q.x + q.y + q.z) || box_distance(frame, q) > 1.05 * params.sharp_value * h) continue;
+        out[2 * j + (upper ? 1 : 0)].push_back({q, u[other]});
+      }
+    }
+  }
+  return out;
+}
+
+// The leaf's value at q in double: the larger of its box distance and its largest slab
+// excess (the evaluation's, without the rounding).
+double leaf_value(const Node& node, const V& q) {
+  const Box box{V{node.lo.x, node.lo.y, node.lo.z}, V{node.hi.x, node.hi.y, node.hi.z}};
+  double value = box_distance(box, q);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const V w{node.slabs.w[i].x, node.slabs.w[i].y, node.slabs.w[i].z};
+    value = std::max({value, node.slabs.lo_at[i] - dot(w, q), dot(w, q) - node.slabs.hi_at[i]});
+  }
+  return value;
+}
+
+// Whether a point of `beyond` (Z a step past one of D's edges, beside_edges()) that is
+// not in front of the node's own side u_j = const comes within 1.2·sharp_value·h of the
+// node's box and slabs. Those points belong to other sub-patches, whose faces trim
+// them, but where X_s and X_t are nearly parallel the node's own in-plane slab along
+// the edge is wide and can take them in (tp_22's t = 0 edge, 1.5 leaf lengths away).
+bool takes_in_beside(const Node& node, std::size_t j, const std::vector<BeyondPoint>& beyond, double h,
+                     const PatchCoverParams& params) {
+  const std::size_t other = 1 - j;
+  const double lo = to_mpq(node.domain.intervals[other].first).get_d();
+  const double hi = to_mpq(node.domain.intervals[other].second).get_d();
+  for (const BeyondPoint& b : beyond) {
+    if (b.along >= lo && b.along <= hi) continue;
+    if (leaf_value(node, b.point) <= 1.2 * params.sharp_value * h) return true;
+  }
+  return false;
+}
+
 // Whether a side of `node` lets Z past an edge of `domain` come too close to its slab
 // face (patch_cover.hpp, "Edges"). Side (j, upper) of the node lies a parameter gap g
 // inside D's edge on that side, about g·|w·X_j| in the facing slab's coordinate; the
@@ -589,6 +689,13 @@ unsigned blunt_edge(const CoverContext& ctx, const Node& node, const ParameterDo
       const double inside = 0.9 * std::abs(to_mpq(edge - at).get_d()) * std::abs(along);
       if (inside >= node.slabs.hi_at[i] - node.slabs.lo_at[i]) continue;
       if (!continues_in_frame(ctx, node, j, to_mpq(edge).get_d(), upper, frame, h, params)) continue;
+      // Only down to 1/32 of D along the edge: where the edge bends sharply or X is
+      // singular Z beside a node is within reach of X(D) itself, and no split helps.
+      if (m == 2 && at == edge && 32 * (node.domain.intervals[1 - j].second - node.domain.intervals[1 - j].first) >
+                                      domain.intervals[1 - j].second - domain.intervals[1 - j].first &&
+          takes_in_beside(node, j, ctx.beyond[2 * j + (upper ? 1 : 0)], h, params)) {
+        halve |= 1U << (1 - j);
+      }
       // The face the side lies along: the lower one when w·X grows inward from it.
       const bool lower_face = (along > 0) != upper;
       ParameterDomain side = node.domain;
@@ -674,7 +781,7 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
   for (const V& p : points) extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
   const PointGrid sample(points, reach / 2);
   const CoverContext coarse_ctx{parametrization, DoublePatch(parametrization), budget,
-                                {0, PatchBoundsParams().max_denominator_depth}};
+                                {0, PatchBoundsParams().max_denominator_depth}, domain};
   const Node hull = make_node(coarse_ctx, domain, false);
   // Every node box lies in the Bernstein hull of D (de Casteljau's control points
   // are convex combinations of the parent's), so far cells beyond it cannot matter.
@@ -688,8 +795,9 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
   FarCellSearch far(region, safe, sample, reach - 1e-12 * std::max(extent, h), params.resolution * h, budget, params,
                     stats);
 
-  const CoverContext ctx{parametrization, DoublePatch(parametrization), budget,
-                         {params.tightening_depth, PatchBoundsParams().max_denominator_depth}};
+  CoverContext ctx{parametrization, DoublePatch(parametrization), budget,
+                   {params.tightening_depth, PatchBoundsParams().max_denominator_depth}, domain};
+  if (domain.intervals.size() == 2 && searched) ctx.beyond = beside_edges(ctx, frame, h, params);
   const std::vector<Node> nodes = refine_quadtree(ctx, domain, searched ? &far : nullptr, frame, h, params, stats);
   stats.nodes = nodes.size();
 
@@ -704,6 +812,7 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
   const std::size_t k = cover.cluster_size_;
   while (order.size() % k != 0) order.push_back(order.back());
   stats.clusters = order.size() / k;
+  double point_extent = 0;
   for (std::size_t c = 0; c < stats.clusters; ++c) {
     Vec3<float> clo = nodes[order[c * k]].lo, chi = nodes[order[c * k]].hi;
     for (std::size_t j = c * k; j < (c + 1) * k; ++j) {
@@ -720,7 +829,21 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
     }
     cover.float_.cluster_lo.push_back(clo);
     cover.float_.cluster_hi.push_back(chi);
+    // The cluster's middle leaf's centre: central in the cluster, so the seed is near
+    // wherever the cluster is.
+    const V x = ctx.patch.at(centre_of(nodes[order[c * k + k / 2]].domain));
+    if (std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z) &&
+        std::max({std::abs(x.x), std::abs(x.y), std::abs(x.z)}) < kClamp) {
+      cover.float_.cluster_point.push_back({static_cast<float>(x.x), static_cast<float>(x.y), static_cast<float>(x.z)});
+      point_extent = std::max({point_extent, std::abs(x.x), std::abs(x.y), std::abs(x.z)});
+    }
   }
+  // The points' rounding, e <= √3·2^-24 of the points' extent M (the double
+  // evaluation's 1e-12 is far below): with a the distance to the exact point,
+  // (a − e)²·kSeedScale + E² >= a² for every a once (E/e)² exceeds about 3·2^10,
+  // so E = 2^-16·M, the seed staying above the squared distance to the leaves' hull.
+  cover.float_.seed_margin =
+      static_cast<float>(std::min(std::pow(std::ldexp(point_extent, -16), 2), kFarSquared));
   cover.copy_boxes_to_double();
   return cover;
 }
@@ -744,6 +867,8 @@ void PatchCover::copy_boxes_to_double() {
   double_.slack = kSlabSlackDouble;
   double_.cluster_lo = to_double(float_.cluster_lo);
   double_.cluster_hi = to_double(float_.cluster_hi);
+  double_.cluster_point = to_double(float_.cluster_point);
+  double_.seed_margin = float_.seed_margin;
   float_.hull_lo = lo();
   float_.hull_hi = hi();
   double_.hull_lo = {float_.hull_lo.x, float_.hull_lo.y, float_.hull_lo.z};
@@ -802,6 +927,10 @@ std::string PatchCover::to_glsl(const std::string& function) const {
       "  vec3 m = min(max(max(lo - p, p - hi), 0.0), vec3(" + format_glsl_float(static_cast<float>(kClamp)) + "));\n"
       "  return m.x * m.x + m.y * m.y + m.z * m.z;\n"
       "}\n"
+      "float " + f + "_s2(vec3 p, vec3 s) {\n"
+      "  vec3 q = p - s;\n"
+      "  return q.x * q.x + q.y * q.y + q.z * q.z;\n"
+      "}\n"
       "float " + f + "_leaf(vec3 p, float best, vec3 lo, vec3 hi, vec3 w0, vec3 w1, vec3 w2, vec3 slo, vec3 shi) {\n"
       "  float a = " + f + "_d2(p, lo, hi);\n"
       "  vec3 d = p - lo;\n"
@@ -815,6 +944,12 @@ std::string PatchCover::to_glsl(const std::string& function) const {
       "  float ad = abs(d);\n"
       "  float d2 = ad * ad;\n"
       "  float best = " + format_glsl_float(static_cast<float>(kFarSquared)) + ";\n";
+  for (const Vec3<float>& s : float_.cluster_point) {
+    out += "  best = min(best, " + f + "_s2(p, " + vec3_literal(s) + "));\n";
+  }
+  out += "  best = best * " + format_glsl_float(static_cast<float>(kSeedScale)) + " + " +
+         format_glsl_float(float_.seed_margin) + ";\n"
+         "  if (best <= d2) return ad;\n";
   const auto zero = [](const Vec3<float>& v) { return v.x == 0 && v.y == 0 && v.z == 0; };
   for (std::size_t c = 0; c < clusters; ++c) {
     out += "  if (" + f + "_d2(p, " + vec3_literal(float_.cluster_lo[c]) + ", " + vec3_literal(float_.cluster_hi[c]) +

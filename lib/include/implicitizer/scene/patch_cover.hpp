@@ -37,11 +37,13 @@
 /// Slabs. A box trims no closer than its own size: where Z continues past an edge of
 /// D, up to a box of it stays inside. So each leaf also carries three slabs
 /// lo_i <= w_i·(x − o) <= hi_i (o the box's lower corner) that its sub-patch lies in,
-/// their normals taken from the tangent frame at the sub-domain's centre: for a
-/// surface, w_n ∥ X_s × X_t and the two in-plane normals w_s ⊥ X_t and w_t ⊥ X_s, so
-/// that the faces of w_s lie along the sub-patch's s-edges and those of w_t along its
-/// t-edges, bent away from them only by the edges' curvature (second order in the
-/// leaf's size); for a curve, its tangent and two normals. The bounds are exact
+/// their normals taken from tangent frames: for a surface, w_n ∥ X_s × X_t at the
+/// sub-domain's centre and the two in-plane normals w_s ⊥ X_t and w_t ⊥ X_s at the
+/// middle of the leaf's side nearer D's edge in that parameter (the centre when the
+/// leaf spans D in it), so that the faces of w_s lie along the sub-patch's s-edges and
+/// those of w_t along its t-edges, bent away from the nearer one only by its curvature
+/// (second order in the side's length, whatever the leaf's depth across it); for a
+/// curve, its tangent and two normals. The bounds are exact
 /// (bound_patch() of the rotated patch w·X, each w_i a float vector read exactly,
 /// |w_i| <= 1 by construction) rounded outwards to float. For every x of the sub-patch
 /// and every p, |p − x| >= w_i·(p − x) >= w_i·(p − o) − hi_i (and lo_i − w_i·(p − o)),
@@ -62,14 +64,21 @@
 /// 0.01·h apart, lies within 1.05·sharp_value·h of the frame box) is halved along that
 /// edge until σ <= (sharp_reach − 1.2·sharp_value)·h, so that points of Z sharp_reach·h
 /// past the edge get values above sharp_value·h (docs/sdf.md, "Patches", measures it).
+/// Z past the same edge beside the leaf belongs to its neighbours, but where X_s and
+/// X_t are nearly parallel the leaf's in-plane slab along the edge is wide and can take
+/// it in: a leaf whose box and slabs come within 1.2·sharp_value·h of such a point
+/// (1025 samples per edge) is halved along the edge too, down to 1/32 of D.
 ///
 /// Evaluation. The leaves, in quadtree order, are grouped in clusters of
 /// cluster_size (default ⌈√leaves⌉) consecutive leaves (the last one padded by repeating its last leaf),
-/// each with the box around its leaves. distance_lower_bound() walks the clusters,
-/// opens only those closer than the best leaf so far, evaluates a leaf's slabs only
-/// when its box is closer than the best, and returns as soon as a leaf is within |d|
-/// (the cluster's and the leaf's box distances are at most the leaf's value, so a
-/// skipped leaf could not have lowered the minimum). Boxes are stored rounded outwards (float and double; corners beyond
+/// each with the box around its leaves and a point of its sub-patch. distance_lower_bound()
+/// starts from the squared distance to the nearest cluster point (raised by its
+/// rounding: at least D(p)², since D(p) <= dist(p, X(D))), walks the clusters, opens
+/// only those closer than the best so far, evaluates a leaf's slabs only when its box
+/// is closer than the best, and returns as soon as the best is within |d| (the
+/// cluster's and the leaf's box distances are at most the leaf's value, so a skipped
+/// leaf could not have lowered the minimum; whatever the start, the result is at most
+/// the smallest leaf value). Boxes are stored rounded outwards (float and double; corners beyond
 /// float's range clamped to ±FLT_MAX, which only shortens distances), squared
 /// distances are computed with each component clamped to 1e18 (no overflow; a
 /// smaller distance), and the final square root is multiplied by 1 − 2^−17 (float;
@@ -146,7 +155,8 @@ class PatchCover {
     const Boxes<T>& b = boxes<T>();
     const T ad = std::abs(d);
     const T d2 = ad * ad;
-    T best = T(kFarSquared);
+    T best = seed_squared(b, p);
+    if (best <= d2) return ad;
     const std::size_t k = cluster_size_;
     for (std::size_t c = 0; c < b.cluster_lo.size(); ++c) {
       if (squared_distance(p, b.cluster_lo[c], b.cluster_hi[c]) < best) {
@@ -174,12 +184,12 @@ class PatchCover {
   /// The further factor of hull_distance_lower_bound().
   static constexpr double kHullShrink = 1.0 - 0x1p-16;
 
-  /// `float FUNCTION(vec3 p, float d)` and its helpers FUNCTION_d2 and FUNCTION_leaf, computing
+  /// `float FUNCTION(vec3 p, float d)` and its helpers FUNCTION_d2, FUNCTION_s2 and FUNCTION_leaf, computing
   /// distance_lower_bound<float>: the same walk, unrolled, the boxes stated as
   /// literals. Precondition: FUNCTION is a valid GLSL identifier.
   std::string to_glsl(const std::string& function) const;
   /// The other global names to_glsl(FUNCTION) defines: FUNCTION + each suffix.
-  static std::vector<std::string> glsl_suffixes() { return {"_d2", "_leaf"}; }
+  static std::vector<std::string> glsl_suffixes() { return {"_d2", "_s2", "_leaf"}; }
 
   /// What build() did.
   const PatchCoverStats& stats() const { return stats_; }
@@ -209,6 +219,8 @@ class PatchCover {
   static constexpr double kSlabSlackDouble = 0x1p-48;
   /// Each component of a box distance is clamped to this before squaring.
   static constexpr double kClamp = 1e18;
+  /// The seed's relative raise: far above the few roundings of a squared distance.
+  static constexpr double kSeedScale = 1.0 + 0x1p-10;
 
  private:
   // Sets the double boxes to the float ones (exact in double) and both shrink factors.
@@ -221,6 +233,8 @@ class PatchCover {
     std::vector<Vec3<T>> slab_lo, slab_hi;        // its slab bounds, relative to lo
     T slack = 0;                                  // kSlabSlack or kSlabSlackDouble
     std::vector<Vec3<T>> cluster_lo, cluster_hi;  // one per cluster
+    std::vector<Vec3<T>> cluster_point;           // a point of each cluster's sub-patch
+    T seed_margin = 0;                            // added to the seed: the points' rounding
     Vec3<T> hull_lo{}, hull_hi{};                 // the box around every leaf box
     T shrink = 1;
   };
@@ -231,6 +245,21 @@ class PatchCover {
                     std::max(lo.z - p.z, p.z - hi.z)};
     const Vec3<T> m = min(max(q, T(0)), T(kClamp));
     return m.x * m.x + m.y * m.y + m.z * m.z;
+  }
+
+  // The walk's starting best: the squared distance to the nearest cluster point, a point
+  // of X(D) up to its rounding, so at least D(p)² once raised by kSeedScale and the
+  // points' rounding. Any start is safe (a cluster left closed has leaf values at
+  // least its box distance, at least best); this one only lets the walk skip the
+  // clusters farther than the patch is already known to be near.
+  template <typename T>
+  static T seed_squared(const Boxes<T>& b, const Vec3<T>& p) {
+    T best = T(kFarSquared);
+    for (const Vec3<T>& s : b.cluster_point) {
+      const Vec3<T> q = p - s;
+      best = std::min(best, q.x * q.x + q.y * q.y + q.z * q.z);
+    }
+    return best * T(kSeedScale) + b.seed_margin;
   }
 
   // min(best, leaf j's squared value): the larger of its box distance and the square of
