@@ -235,6 +235,30 @@ TEST(FastSdf, SheetIsTheAbsoluteEstimateClippedToTheBox) {
   EXPECT_THROW((void)FastSdf::build(f, SceneBox::default_box(), Budget(), SdfShape::automatic), std::invalid_argument);
 }
 
+// A covered sheet's trust majorant (FastSheetOptions::zero_where_untrusted) runs over
+// all of G's terms, also one far below the program's resolution that the program
+// drops: the sphere plus 10^-60·x^7 compiles to a degree-2 program, and its majorant
+// has the 8 coefficients of degree 0 to 7 (the request fuzzer found the majorant sized
+// by the program's degree, written past its end).
+TEST(FastSdf, TrustMajorantCoversTermsTheProgramDrops) {
+  const Polynomial f = parse_xyz("x^2+y^2+z^2-1+1/1000000000000000000000000000000000000000000000000000000000000*x^7");
+  FastSheetOptions options;
+  options.zero_where_untrusted = true;
+  const FastSdf sheet = FastSdf::build(f, SceneBox::default_box(), Budget(), SdfShape::sheet, options);
+  const std::string glsl = sheet.to_glsl("trusted_sdf");
+  const std::size_t horner_steps = [&] {
+    std::size_t n = 0;
+    for (std::size_t at = glsl.find(") * r + "); at != std::string::npos; at = glsl.find(") * r + ", at + 1)) ++n;
+    return n;
+  }();
+  EXPECT_EQ(horner_steps, 7U) << glsl;
+  EXPECT_EQ(testing::glslang_errors("#version 300 es\nprecision highp float;", glsl, "trusted_sdf"), "");
+  // Where the gradient is far above the majorant the estimate is kept: |F|/|∇F| at
+  // (1/2, 0, 0) is 0.75 (first order, not the distance 1/2).
+  EXPECT_NEAR(sheet.evaluate<double>(0.5, 0, 0), 0.75, 1e-6);
+  EXPECT_EQ(sheet.evaluate<float>(1, 0, 0), 0.0f);
+}
+
 }  // namespace
 }  // namespace implicitizer
 

@@ -1,6 +1,8 @@
 #include "implicitizer/sdf/fast_sdf.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace implicitizer {
@@ -31,15 +33,30 @@ FastSdf FastSdf::build(const Polynomial& f, const SceneBox& box, const Budget& b
     // degree k and r = max|u_i| (each monomial of degree k is at most r^k), times
     // kTrustFactor·γ_m so that the program compares |∇G| with it directly; each S_k
     // rounded up, and 2^-10 more for the float evaluation of the majorant itself.
+    // The sums run over all of G's terms, also those the program drops as below its
+    // resolution (a larger majorant, never a smaller one), so by G's own degree. A sum
+    // beyond float's range is stated as the largest float: the estimate is then never
+    // trusted there, and the cover stands alone.
     const double m = 2.0 * sdf.program_.degree() + 4, eps = 0x1p-23;
     const double factor = kTrustFactor * m * eps / (1 - m * eps) * (1 + 0x1p-10);
-    std::vector<double> sums(static_cast<std::size_t>(sdf.program_.degree()) + 1, 0.0);
-    for (std::size_t t = 0; t < g.num_terms(); ++t) {
+    const auto total_degree = [&](std::size_t t) {
       std::int32_t k = 0;
       for (const std::int32_t e : g.exponents(t)) k += e;
-      sums[static_cast<std::size_t>(k)] += std::abs(to_mpq(g.coefficient(t)).get_d()) * (1 + 0x1p-50);
+      return static_cast<std::size_t>(k);
+    };
+    std::size_t degree = 0;
+    for (std::size_t t = 0; t < g.num_terms(); ++t) degree = std::max(degree, total_degree(t));
+    std::vector<double> sums(degree + 1, 0.0);
+    for (std::size_t t = 0; t < g.num_terms(); ++t) {
+      sums[total_degree(t)] += std::abs(to_mpq(g.coefficient(t)).get_d()) * (1 + 0x1p-50);
     }
-    for (const double s : sums) sdf.trust_float_.push_back(round_up<float>(to_rational(mpq_class(s * factor))));
+    constexpr float kLargest = std::numeric_limits<float>::max();
+    for (const double s : sums) {
+      const double scaled = s * factor;
+      sdf.trust_float_.push_back(std::isfinite(scaled) && scaled < kLargest
+                                     ? std::min(round_up<float>(to_rational(mpq_class(scaled))), kLargest)
+                                     : kLargest);
+    }
     sdf.trust_.assign(sdf.trust_float_.begin(), sdf.trust_float_.end());
   }
   return sdf;
