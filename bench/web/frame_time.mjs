@@ -14,9 +14,10 @@
 // shared with whatever else runs.
 //
 //   node bench/web/frame_time.mjs [--surface tp_33] [--tolerance 0,1e-3] [--size 128] [--frames 2]
-//   node bench/web/frame_time.mjs --requests '[{"name": "enneper", "x": ..., "box": [...]}]'
+//   node bench/web/frame_time.mjs --requests "$(cat bench/web/page_patches.json)"
 //   (from the repository root, after the build and tests/web's npm ci; --requests
-//   measures the given /v1/sdf requests instead, e.g. the page's examples in their boxes)
+//   measures the given /v1/sdf requests instead: page_patches.json holds the page's
+//   patch examples in their boxes, each also as the solid of its equation)
 import fs from 'node:fs';
 import path from 'node:path';
 import { launchChromium, sharedDir, startServer, stopServer } from '../../tests/web/harness.mjs';
