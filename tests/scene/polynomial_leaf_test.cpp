@@ -393,7 +393,7 @@ TEST(PolynomialLeaf, ApproximatedPatchGlslRunsOnLlvmpipe) {
   ASSERT_NE(leaf.approximation(), nullptr);
   EXPECT_EQ(testing::glslang_both(scene), "");
   // One distance and one trimming per piece, and their min; tp_33's pieces are nearly
-  // flat, so some are trimmed to their polytope (six planes) rather than a box cover.
+  // flat, so some are trimmed to their polytope (ten planes) rather than a box cover.
   const std::string glsl = scene.to_glsl();
   std::size_t polytopes = 0;
   for (std::size_t k = 0; k < leaf.piece_count(); ++k) polytopes += leaf.polytope(k) != nullptr ? 1 : 0;
