@@ -18,7 +18,7 @@
 import { ApiError, apiHost, checkHealth, implicitizeRequest, postJson, sdfRequest } from './api.js';
 import { fillExamplesMenu, loadExamples } from './examples.js';
 import { runJob } from './jobs.js';
-import { defaultCamera, Preview, ShaderError } from './preview.js';
+import { ContextLostError, defaultCamera, Preview, ShaderError } from './preview.js';
 
 const $ = (id) => document.getElementById(id);
 const INITIAL_EXAMPLE = 'torus_R2_r1';
@@ -66,6 +66,7 @@ const ui = {
   stats: $('preview-stats'),
   approximation: $('approximation'),
   aa: $('aa'),
+  resolution: $('resolution'),
   resetView: $('reset-view'),
   copyGlsl: $('copy-glsl'),
   glsl: $('glsl'),
@@ -531,13 +532,31 @@ if (!preview) {
 
 function previewStatus(s) {
   if (s.state === 'compiling') ui.stats.textContent = 'Compiling the shader…';
-  else if (s.state === 'rendering') ui.stats.textContent = `Rendering… ${Math.round((s.progress || 0) * 100)}%`;
+  else if (s.state === 'rendering') {
+    const rung = s.factor > 1 ? `quick picture at 1/${s.factor} of the resolution` : 'full resolution';
+    ui.stats.textContent = `Rendering… ${rung}, ${Math.round((s.progress || 0) * 100)}%`;
+  } else if (s.state === 'refining') {
+    ui.stats.textContent = `Anti-aliasing ${s.aa}×${s.aa}… ${Math.round((s.progress || 0) * 100)}% (the picture is complete; AA refines it)`;
+  }
   else if (s.state === 'done') {
     const gpu = shortRenderer(s.renderer);
     ui.stats.textContent = `${s.width}×${s.height} px · AA ${s.aa}×${s.aa} · ${currentMode()} mode · ${formatMs(s.ms)}${gpu ? ' · ' + gpu : ''}`;
     ui.stats.title = s.renderer || '';
+  } else if (s.state === 'lost') {
+    showContextLost(s.restored);
   } else if (s.state === 'error' && s.message) ui.stats.textContent = s.message;
   else if (s.state === 'empty') ui.stats.textContent = '';
+}
+
+// The picture went with the GPU context: said in red on the stage, with what makes the
+// shader lighter, and in the status line, which must not keep an earlier "done".
+function showContextLost(restored) {
+  const what = 'The GPU gave up on this shader (the WebGL context was lost): it costs too much per frame here.';
+  const todo = 'A lighter picture: set a tolerance (e.g. 1e-3) for low-degree pieces, or choose Resolution ½ or ¼ and AA 1×1, then draw again.';
+  showPreviewError(`${what}\n${restored ? 'The GPU is back. ' : 'Waiting for the GPU to come back… '}${todo}`);
+  ui.stats.textContent = restored ? 'GPU context restored: nothing drawn.' : 'GPU context lost.';
+  if (!state.busy) setProgress('error', 'No picture: the GPU context was lost.');
+  if (restored) state.drawn = null; // a mode switch must not redraw what cost the context
 }
 
 function currentMode() {
@@ -606,6 +625,19 @@ function showApproximation(a) {
   ui.approximation.dataset.bound = String(Math.max(a.patch_to_surface.bound, a.surface_to_patch.bound));
 }
 
+// The box [x0, y0, z0, x1, y1, z1] scaled by `factor` about its centre.
+function widenedBox(box, factor) {
+  const half = box.length / 2;
+  const out = [...box];
+  for (let i = 0; i < half; ++i) {
+    const c = (box[i] + box[i + half]) / 2;
+    const h = ((box[i + half] - box[i]) / 2) * factor;
+    out[i] = c - h;
+    out[i + half] = c + h;
+  }
+  return out;
+}
+
 /// POST /v1/sdf for `source` ({implicit} or {x, y, z, domain}) in the current mode,
 /// shape and box, then compiles it into the preview. A sheet in space also gets its
 /// equation F as a signed solid (the side function, preview.js says why). `equation`
@@ -634,8 +666,14 @@ async function drawSurface(source, equation, box, name, busy) {
     // when F has no z (a cylinder over a curve), where {implicit} would be a plane curve.
     const implicit = answer.leaves?.[0]?.implicit || equation;
     const scene = { type: 'implicit', equation: implicit, shape: 'solid' };
+    // In a box twice the sheet's: a solid is positive outside its box, so in the
+    // sheet's own box the side would change sign on the box's faces too, and a fast
+    // step that crosses a face and the sheet (F/|grad F| overshoots far from the
+    // surface) would see the same sign at both ends and miss the sheet. Outside the
+    // sheet's box a step stops at its faces, so the larger box's faces are crossed apart.
+    const sideBox = widenedBox(answerBox, 2);
     // A plain POST, not a job: the comment at the top of this file says why.
-    const signed = await postJson('/v1/sdf', sdfRequest({ scene, mode: 'fast', box: answerBox, name: `${name}_side`, timeoutMs }), { signal });
+    const signed = await postJson('/v1/sdf', sdfRequest({ scene, mode: 'fast', box: sideBox, name: `${name}_side`, timeoutMs }), { signal });
     signal.throwIfAborted();
     side = { glsl: signed.glsl, functionName: signed.function };
   }
@@ -716,21 +754,37 @@ async function run(label, body, scope = 'answer') {
       return;
     }
     if (!endBusy(busy, 'error', 'Failed.')) return;
-    const why = error instanceof ApiError ? `${error.code}: ${error.message}` : error instanceof ShaderError ? 'the GPU refused the shader' : String(error.message || error);
+    const why = error instanceof ApiError ? `${error.code}: ${error.message}` : error instanceof ShaderError ? 'the GPU refused the shader' : error instanceof ContextLostError ? 'the GPU context was lost' : String(error.message || error);
     clearReplaced(busy, scope, 'failed', { answer: `No answer: the request failed (${why}).`, picture: `Nothing to draw: ${why}.` });
     showFailure(error);
   }
 }
 
+// What to change when a computation stopped at its time limit: the Limit the page
+// sent, then what makes the phase named in the message cheaper.
+function timeLimitHint(error) {
+  const steps = [];
+  if (Number(ui.timeout.value)) steps.push('choose a larger Limit, or none (the job then runs until it is done, with its progress and Cancel)');
+  else steps.push("the server's job limit stopped it");
+  if (/approximation/.test(error.message)) steps.push('or empty the tolerance for the exact equation, or raise it for fewer pieces');
+  else if (/distance function|sdf|glsl/i.test(error.message)) steps.push('or set a tolerance for low-degree pieces');
+  else if (ui.method.value !== 'auto') steps.push('or try the Method auto');
+  return steps.join('; ');
+}
+
 // Shows why a request failed: beside its input, under the inputs, or on the stage.
 function showFailure(error) {
   if (error instanceof ApiError) {
+    if (error.code === 'time_limit_exceeded' && !error.hint) error.hint = timeLimitHint(error);
     showError(error, error.fieldMap || {});
     setProgress('error', error.status ? `Error ${error.status} · ${error.code}` : `Error · ${error.code}`);
     if (error.status === 0 && error.code === 'network_error') updateServerStatus(false);
   } else if (error instanceof ShaderError) {
     showPreviewError('The GPU refused the shader:', error.log);
     setProgress('error', 'The shader did not compile.');
+  } else if (error instanceof ContextLostError) {
+    showContextLost(!preview.contextLost);
+    setProgress('error', 'No picture: the GPU context was lost.');
   } else {
     ui.generalError.textContent = String(error.message || error);
     ui.generalError.hidden = false;
@@ -948,6 +1002,7 @@ ui.aa.addEventListener('change', () => {
   if (preview) preview.setAntialiasing(Number(ui.aa.value));
   else if (state.drawn) run('Rendering on the server…', async (busy) => (await drawOnServer(state.drawn, currentMode(), busy), 'Rendered on the server.'));
 });
+ui.resolution.addEventListener('change', () => preview && preview.setResolution(Number(ui.resolution.value)));
 ui.resetView.addEventListener('click', () => preview && preview.resetView());
 
 // ---------------------------------------------------------------- copying

@@ -44,13 +44,16 @@
 // antialiased from |value| in pixels, a solid curve's inside tinted. Drag pans, the
 // wheel zooms about the pointer.
 //
-// The image is drawn progressively, in horizontal strips sized so that each takes
-// about STRIP_BUDGET_MS on the GPU (measured with fences), so that a software GL or a
-// heavy shader never blocks the page; while the camera moves, a low-resolution image
-// with one sample per pixel is drawn instead, then refined when the motion stops.
+// The image is drawn progressively (#startImage): complete pictures at a quarter, a
+// half, ... of the resolution first, the coarsest drawn within QUICK_BUDGET_MS, then the
+// full resolution, then the page's anti-aliasing, in horizontal strips sized so that
+// each takes about STRIP_BUDGET_MS on the GPU (measured with fences). A software GL or
+// a heavy shader thus shows a whole picture early and never blocks the page or holds
+// the GPU long enough for the browser to take the context away; while the camera
+// moves, only the quick picture is drawn, then refined when the motion stops.
 
 const STRIP_BUDGET_MS = 80;
-const LOW_RES_BUDGET_MS = 30;
+const QUICK_BUDGET_MS = 30;
 const WORLD_UP = [0, 1, 0];
 
 const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
@@ -110,6 +113,15 @@ export function webgl2Available() {
   }
 }
 
+/// The GPU context was lost (or is not back yet) while a surface was being set: the
+/// picture is gone, through no fault of the shader's text.
+export class ContextLostError extends Error {
+  constructor() {
+    super('the GPU context was lost');
+    this.name = 'ContextLostError';
+  }
+}
+
 /// A shader that failed to compile or link; `log` is the driver's message.
 export class ShaderError extends Error {
   constructor(message, log) {
@@ -127,15 +139,19 @@ void main() {
 }
 `;
 
-// The tetrahedron technique on `fn` (docs/render.md §5): N = Σ k_i f(p + h k_i) = 4h∇f + O(h²).
+// The tetrahedron technique on `fn` (docs/render.md §5): N = Σ k_i f(p + h k_i) = 4h∇f + O(h²),
+// k_i = (1, −1, −1), (−1, −1, 1), (−1, 1, −1), (1, 1, 1) made from the index. A loop the
+// compiler cannot unroll (it starts at the uniform pv_zero, always 0) keeps one copy of
+// `fn` instead of four: a GPU compiler inlines every call, and compiling is what a heavy
+// surface's first picture waits for (SwiftShader compiles at the first draw).
 function tetrahedronNormal(name, fn) {
   return `vec3 ${name}(vec3 p) {
   float h = 1e-3 * pv_unit;
-  const vec3 k0 = vec3(1.0, -1.0, -1.0);
-  const vec3 k1 = vec3(-1.0, -1.0, 1.0);
-  const vec3 k2 = vec3(-1.0, 1.0, -1.0);
-  const vec3 k3 = vec3(1.0, 1.0, 1.0);
-  vec3 n = k0 * ${fn}(p + h * k0) + k1 * ${fn}(p + h * k1) + k2 * ${fn}(p + h * k2) + k3 * ${fn}(p + h * k3);
+  vec3 n = vec3(0.0);
+  for (int i = pv_zero; i < 4; ++i) {
+    vec3 k = 2.0 * vec3(float(((i + 3) >> 1) & 1), float((i >> 1) & 1), float(i & 1)) - 1.0;
+    n += k * ${fn}(p + h * k);
+  }
   float len = length(n);
   return len > 0.0 ? n / len : vec3(0.0);
 }`;
@@ -156,6 +172,7 @@ uniform vec2 pv_resolution;
 uniform int pv_aa;
 uniform float pv_unit;
 uniform float pv_tmax;
+uniform int pv_zero; // always 0: loops that start at it are not unrolled (tetrahedronNormal)
 out vec4 pv_colour;
 
 // ---- the GLSL returned by POST /v1/sdf, unchanged ----
@@ -176,7 +193,7 @@ float pv_shadow(vec3 p, vec3 l) {
   float t = 0.02 * pv_unit;
   float tmax = 2.5 * pv_unit;
   float res = 1.0;
-  for (int i = 0; i < 64; ++i) {
+  for (int i = pv_zero; i < 64; ++i) {
     if (t > tmax) break;
     float f = pv_map(p + t * l);
     res = min(res, 1.5 * f / t);
@@ -190,7 +207,7 @@ float pv_shadow(vec3 p, vec3 l) {
 float pv_occlusion(vec3 p, vec3 n) {
   float occluded = 0.0;
   float weight = 0.5;
-  for (int i = 1; i <= 4; ++i) {
+  for (int i = 1 + pv_zero; i <= 4; ++i) {
     float d = pv_unit * float(i) / 4.0;
     occluded += weight * (d - pv_map(p + d * n)) / pv_unit;
     weight *= 0.5;
@@ -220,19 +237,75 @@ ${side ? `  vec3 n = pv_signed_normal(p);
   return pow(clamp(colour, 0.0, 1.0), vec3(1.0 / 2.2));
 }
 ${side ? `
-// A step across the sheet (march_ray.cpp SheetCrossing): the signed function's sign
-// changed between a and b; bisect on it and return the crossing when the sheet's
-// value there is below eps, else -1.
-float pv_crossing(vec3 ro, vec3 rd, float a, float b, float sa, float eps) {
-  for (int i = 0; i < 40; ++i) {
-    if (b - a <= 1e-3 * eps) break;
-    float m = 0.5 * (a + b);
-    float sm = sign(pv_signed(ro + m * rd));
-    if (sm == 0.0) { a = m; b = m; break; }
-    if (sm == sa) a = m; else b = m;
+// Sphere tracing of a sheet (march_ray.cpp march_sphere with SheetCrossing): a step
+// whose ends lie on different sides of F = 0 (the signed function's sign) is scanned
+// in 16 parts, and each part whose ends differ is bisected on the sign in turn, the
+// first crossing where the sheet's value is below eps a hit; a crossing off the drawn
+// sheet (its untrimmed continuation, the box) lets the scan go on. All of it is one
+// loop whose every pass evaluates the sheet and the sign once, rather than loops
+// nested in the march: a GPU that runs both sides of a branch (SwiftShader does)
+// would pay for the nested loops on every step.
+float pv_march_sheet(vec3 ro, vec3 rd, float eps) {
+  float t = 0.0;                      // marching: the current point
+  float lastT = 0.0, lastSign = 0.0;  // the last point with a sign, and that sign
+  int phase = 0;                      // 0 marching, 1 scanning [lastT, endT], 2 bisecting [a, b]
+  int steps = 0, part = 0, halvings = 0;
+  float endT = 0.0, endSign = 0.0;    // the step being scanned: its far end and side
+  float scanT = 0.0, scanSign = 0.0;  // the scan's position and its side
+  float a = 0.0, b = 0.0, sb = 0.0;   // the part being bisected; scanSign at a, sb at b
+  for (int i = 0; i < 1024; ++i) {
+    float q = phase == 0 ? t : phase == 1 ? mix(lastT, endT, float(part) / 16.0) : 0.5 * (a + b);
+    vec3 p = ro + q * rd;
+    float f = pv_map(p);
+    float s = sign(pv_signed(p));
+    if (phase == 0) {
+      if (f < eps) return t;
+      if (s != 0.0 && lastSign != 0.0 && s != lastSign) {
+        phase = 1;
+        endT = t;
+        endSign = s;
+        scanT = lastT;
+        scanSign = lastSign;
+        part = 1;
+        continue;
+      }
+      if (s != 0.0) { lastSign = s; lastT = t; }
+      t += f;
+      if (t > pv_tmax || ++steps >= 255) return -1.0;
+    } else if (phase == 1) {
+      if (s != 0.0 && s != scanSign) {
+        phase = 2;
+        a = scanT;
+        b = q;
+        sb = s;
+        halvings = 0;
+        continue;
+      }
+      if (s != 0.0) { scanT = q; scanSign = s; }
+      if (++part > 16) {
+        // No crossing on the sheet in this step: march on from its far end.
+        phase = 0;
+        lastT = endT;
+        lastSign = endSign;
+        t = endT;
+      }
+    } else {
+      float m = q;
+      if (s == 0.0 || m <= a || m >= b) { a = m; b = m; }
+      else if (s == scanSign) a = m;
+      else b = m;
+      if (b - a <= 1e-3 * eps || ++halvings >= 40) {
+        if (f < eps) return m;
+        // A crossing off the sheet: the scan goes on from the part's end.
+        phase = 1;
+        scanT = b;
+        scanSign = sb;
+        ++part;
+        if (part > 16) { phase = 0; lastT = endT; lastSign = endSign; t = endT; }
+      }
+    }
   }
-  float c = 0.5 * (a + b);
-  return pv_map(ro + c * rd) < eps ? c : -1.0;
+  return -1.0;
 }
 ` : ''}
 void main() {
@@ -245,21 +318,15 @@ void main() {
       vec2 uv = (pixel - 0.5 * pv_resolution) / pv_resolution.y;
       vec3 rd = normalize(uv.x * pv_right + uv.y * pv_up + pv_forward);
       // Sphere tracing (march_ray.cpp march_sphere): signed hit rule, 255 steps.
-      float t = 0.0;
+${side ? `      float t = pv_march_sheet(pv_eye, rd, eps);
+      bool hit = t >= 0.0;` : `      float t = 0.0;
       bool hit = false;
-${side ? `      float lastT = 0.0, lastSign = 0.0;` : ''}
       for (int i = 0; i < 255; ++i) {
         float f = pv_map(pv_eye + t * rd);
         if (f < eps) { hit = true; break; }
-${side ? `        float s = sign(pv_signed(pv_eye + t * rd));
-        if (s != 0.0 && lastSign != 0.0 && s != lastSign) {
-          float c = pv_crossing(pv_eye, rd, lastT, t, lastSign, eps);
-          if (c >= 0.0) { t = c; hit = true; break; }
-        }
-        if (s != 0.0) { lastSign = s; lastT = t; }` : ''}
         t += f;
         if (t > pv_tmax) break;
-      }
+      }`}
       sum += hit ? pv_shade(pv_eye + t * rd, rd) : vec3(0.95);
     }
   }
@@ -348,31 +415,39 @@ export class Preview {
     this.camera = null; // {target, eye, unit, centre}: the 3-D view
     this.plane = null; // {centre: [x, y], scale, defaultScale, extent}: the 2-D view of a curve
     this.frame = 0;
-    this.work = null; // the image being drawn: {kind: 'low' | 'wait' | 'full' | 'finishing', nextRow}
+    this.work = null; // the picture being drawn: {factor, aa, rung, nextRow, lastRows, started, finishing}
     this.fence = null;
     this.rafPending = false;
     this.dragging = false;
     this.interactUntil = 0;
-    this.stripRows = 32;
-    this.lowResFactor = 4;
+    this.rowCost = undefined; // ms of one full-width row at one sample per pixel, as last measured
     this.lowRes = null; // {fbo, texture, width, height}
     this.vao = gl.createVertexArray();
     this.contextLost = false;
+    this.resolution = 1; // the fraction of the canvas's pixels drawn (setResolution)
     this.#attachInput();
     this.#attachResize();
+    // A lost context (the browser's watchdog took the GPU back from a draw or a
+    // compilation that ran too long, or the GPU reset) takes the picture with it: the
+    // state says so (data-lost counts the losses) until a surface is drawn again. When
+    // the context is restored, the surface that was up is not redrawn by itself, since
+    // it may be what cost the context; the page offers what to change.
+    this.losses = 0;
     canvas.addEventListener('webglcontextlost', (e) => {
-      e.preventDefault();
+      e.preventDefault(); // asks for the context back
       this.contextLost = true;
       this.program = null;
       this.lowRes = null;
       this.fence = null;
       this.work = null;
-      this.#setState('error', { message: 'The GPU context was lost; restoring it…' });
+      this.losses += 1;
+      canvas.dataset.lost = String(this.losses);
+      this.#setState('lost', { restored: false });
     });
     canvas.addEventListener('webglcontextrestored', () => {
       this.contextLost = false;
       this.vao = gl.createVertexArray();
-      if (this.surface) this.setSurface(this.surface, { keepCamera: true }).catch(() => {});
+      this.#setState('lost', { restored: true });
     });
   }
 
@@ -386,6 +461,7 @@ export class Preview {
     const generation = ++this.generation;
     const gl = this.gl;
     this.work = null;
+    if (this.contextLost) throw new ContextLostError();
     this.#setState('compiling');
     const program = gl.createProgram();
     const vs = this.#shader(gl.VERTEX_SHADER, VERTEX_SHADER);
@@ -403,6 +479,7 @@ export class Preview {
       gl.deleteProgram(program);
       throw Object.assign(new Error('replaced by a newer surface'), { name: 'AbortError' });
     }
+    if (this.contextLost || gl.isContextLost()) throw new ContextLostError();
     if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
       const log = [gl.getShaderInfoLog(fs), gl.getShaderInfoLog(vs), gl.getProgramInfoLog(program)]
         .filter((s) => s && s.trim())
@@ -436,6 +513,8 @@ export class Preview {
       this.lastView.dimension === surface.dimension &&
       JSON.stringify(this.lastView.box) === JSON.stringify(surface.box);
     this.surface = surface;
+    this.rowCost = undefined; // another shader: its first quick pass measures it
+    this.canvas.dataset.pictures = '0';
     this.lastView = { dimension: surface.dimension, box: surface.box };
     if (!(keepCamera || sameBox) || !(surface.dimension === 2 ? this.plane : this.camera)) this.resetView({ redraw: false });
     this.#startImage(true);
@@ -470,6 +549,13 @@ export class Preview {
     const d = this.canvas.dataset;
     for (const key of ['dimension', 'shape', 'sides', 'view', 'eye', 'target', 'width', 'height', 'aa', 'function', 'box']) delete d[key];
     this.#setState('empty');
+  }
+
+  /// Draws `scale` (1, 1/2, 1/4) of the canvas's pixels in each direction, stretched
+  /// by the browser: a heavy shader on a slow GPU at a quarter of the cost per halving.
+  setResolution(scale) {
+    this.resolution = Math.max(0.125, Math.min(1, Number(scale) || 1));
+    this.applySize();
   }
 
   /// AA×AA samples per pixel (1 to 8).
@@ -546,11 +632,17 @@ export class Preview {
     this.onStatus({ state, ...extra });
   }
 
-  // Begins a new image: a quick low-resolution pass first when `preview` (a new
-  // surface or camera), then the full image in strips.
+  // Begins a new image. `preview` (a new surface, camera or canvas size): a ladder of
+  // complete pictures, each at twice the resolution of the last (one sample per pixel,
+  // stretched over the canvas), from the coarsest that fits QUICK_BUDGET_MS, to the full
+  // resolution; then, when the page asks for AA×AA > 1, the full resolution again at
+  // AA×AA (state "refining" until then). Each picture is counted in data-pictures (its
+  // factor in data-picture-factor); the finished one makes the state "done" and counts in
+  // data-frame. While the camera moves, only the first rung is drawn. Without `preview`
+  // (another AA), only the last pass is drawn over the picture already there.
   #startImage(preview) {
-    this.work = { kind: preview ? 'low' : 'full' };
-    this.#setState('rendering', { progress: 0 });
+    this.work = preview ? { factor: this.#quickFactor(), aa: 1, rung: 0 } : { factor: 1, aa: this.aa, rung: 0 };
+    this.#setState('rendering', { progress: 0, factor: this.work.factor });
     this.#schedule();
   }
 
@@ -568,7 +660,9 @@ export class Preview {
   }
 
   // One animation frame: waits for the previous GPU batch (fence), then draws the next
-  // piece of work and measures it, adapting strip sizes to the GPU's speed.
+  // strip of the current picture. Every batch is measured (#adapt) and the next one
+  // sized to STRIP_BUDGET_MS by it, so that no single draw of a heavy shader holds the
+  // GPU for long: a draw of seconds is what makes a browser take the context away.
   #tick() {
     const gl = this.gl;
     if (this.contextLost || !this.program || !this.work) return;
@@ -576,82 +670,131 @@ export class Preview {
       const status = gl.getSyncParameter(this.fence.sync, gl.SYNC_STATUS);
       if (status !== gl.SIGNALED) return this.#schedule();
       gl.deleteSync(this.fence.sync);
-      const elapsed = performance.now() - this.fence.submitted;
-      this.#adapt(this.fence.kind, elapsed);
+      this.#adapt(this.fence, performance.now() - this.fence.submitted);
       this.fence = null;
     }
     const work = this.work;
-    if (work.kind === 'finishing') return; // the last strip's fence is awaited below
+    if (work.finishing) return; // the last strip's fence is awaited by finish()
     const { width, height } = this.canvas;
-    if (work.kind === 'low') {
-      const lowRows = this.#drawLowRes(width, height);
-      this.#fenceAfter('low', lowRows);
-      work.kind = this.#interacting() ? 'wait' : 'full';
-      return this.#schedule();
-    }
-    if (work.kind === 'wait') {
-      // The camera is still moving: keep the quick image until it stops.
-      if (!this.#interacting()) work.kind = 'full';
-      return this.#schedule();
-    }
-    // work.kind === 'full': the next strip, from the top row down.
+    const target = this.#target(work.factor, width, height);
     if (work.nextRow === undefined) {
-      work.nextRow = height;
-      work.fullStarted = performance.now();
-      this.#publishView(width, height);
+      // A moving camera keeps its first rung until it stops.
+      if (work.rung > 0 && this.#interacting()) return this.#schedule();
+      work.nextRow = target.height;
+      work.started ??= performance.now();
+      if (work.factor === 1) this.#publishView(width, height, work.aa);
     }
-    const rows = Math.max(1, Math.min(work.nextRow, Math.round(this.stripRows)));
+    // Rows of the picture being drawn (1/factor of the canvas), from the top down; a
+    // surface not yet measured draws its first, coarsest picture at once.
+    const perRow = this.rowCost === undefined ? 0 : (this.rowCost * work.aa * work.aa) / work.factor;
+    const fit = perRow > 0 ? Math.round(STRIP_BUDGET_MS / perRow) : work.nextRow;
+    const rows = Math.max(1, Math.min(work.nextRow, fit, work.lastRows ? 2 * work.lastRows : fit));
     const y0 = work.nextRow - rows;
-    this.#draw(null, width, height, this.aa, [0, y0, width, rows]);
-    this.#fenceAfter('full', rows);
+    work.lastRows = rows;
+    this.#draw(target.framebuffer, target.width, target.height, work.aa, [0, y0, target.width, rows]);
+    this.#fenceAfter(rows, work.factor, work.aa);
     work.nextRow = y0;
     if (y0 > 0) {
-      this.#setState('rendering', { progress: 1 - y0 / height });
+      this.#setState(work.aa > 1 && work.rung > 0 ? 'refining' : 'rendering', { progress: 1 - y0 / target.height, factor: work.factor, aa: work.aa });
       return this.#schedule();
     }
-    // Last strip submitted: finish when the GPU has drawn it.
-    work.kind = 'finishing';
+    // Last strip submitted: the picture counts when the GPU has drawn it.
+    work.finishing = true;
     const finish = () => {
       if (this.work !== work) return;
       if (this.fence) {
         if (gl.getSyncParameter(this.fence.sync, gl.SYNC_STATUS) !== gl.SIGNALED) return requestAnimationFrame(finish);
         gl.deleteSync(this.fence.sync);
-        this.#adapt(this.fence.kind, performance.now() - this.fence.submitted);
+        this.#adapt(this.fence, performance.now() - this.fence.submitted);
         this.fence = null;
       }
-      this.work = null;
-      this.frame += 1;
-      this.canvas.dataset.frame = String(this.frame);
-      const ms = performance.now() - work.fullStarted;
-      this.#setState('done', { ms, width, height, aa: this.aa, renderer: this.rendererName });
-      this.canvas.dispatchEvent(new CustomEvent('previewframe', { detail: { frame: this.frame } }));
+      if (work.factor > 1) this.#showLowRes(width, height);
+      this.#pictureDone(work, width, height);
     };
     requestAnimationFrame(finish);
   }
 
-  #fenceAfter(kind, rows) {
+  // A complete picture is on the canvas: count it, then climb to the next rung (twice
+  // the resolution, or straight to the finest that fits the quick budget), then to the
+  // page's AA, or finish.
+  #pictureDone(work, width, height) {
+    const d = this.canvas.dataset;
+    d.pictures = String(Number(d.pictures || 0) + 1);
+    d.pictureFactor = String(work.factor);
+    const ms = performance.now() - work.started;
+    const next = { rung: work.rung + 1, started: work.started };
+    if (work.factor > 1) {
+      Object.assign(next, { factor: Math.min(work.factor / 2, this.#quickFactor()), aa: 1 });
+    } else if (work.aa < this.aa) {
+      Object.assign(next, { factor: 1, aa: this.aa });
+    } else {
+      this.work = null;
+      this.frame += 1;
+      d.frame = String(this.frame);
+      this.#setState('done', { ms, width, height, aa: work.aa, renderer: this.rendererName });
+      this.canvas.dispatchEvent(new CustomEvent('previewframe', { detail: { frame: this.frame } }));
+      return;
+    }
+    this.work = next;
+    this.#setState(next.aa > 1 ? 'refining' : 'rendering', { progress: 0, factor: next.factor, aa: next.aa, ms, pictureFactor: work.factor });
+    this.#schedule();
+  }
+
+  #fenceAfter(rows, factor, aa) {
     const gl = this.gl;
     const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
     gl.flush();
-    this.fence = { sync, kind, rows, factor: this.lowResFactor, aa: this.aa, submitted: performance.now() };
+    this.fence = { sync, rows, factor, aa, submitted: performance.now() };
   }
 
-  // Sizes the next strip so that it takes about STRIP_BUDGET_MS, from the last strip
-  // or from the quick pass (a row of it costs 1/(factor·AA²) of a full row), and the
-  // quick pass's factor so that it takes about LOW_RES_BUDGET_MS. The measure
-  // includes up to a frame of latency, which errs on the small side.
-  #adapt(kind, elapsed) {
-    const f = this.fence;
-    const height = this.canvas.height;
-    if (kind === 'full') {
-      const perRow = Math.max(elapsed, 1) / f.rows;
-      this.stripRows = Math.max(1, Math.min(height, STRIP_BUDGET_MS / perRow, this.stripRows * 2));
-    } else {
-      const perRow = (Math.max(elapsed, 1) / f.rows) * f.factor * f.aa * f.aa;
-      this.stripRows = Math.max(1, Math.min(height, STRIP_BUDGET_MS / perRow));
-      if (elapsed > 2 * LOW_RES_BUDGET_MS && this.lowResFactor < 16) this.lowResFactor *= 2;
-      else if (elapsed < LOW_RES_BUDGET_MS / 3 && this.lowResFactor > 2) this.lowResFactor /= 2;
+  // Measures a batch: this.rowCost, the time of one full-width row at one sample per
+  // pixel, from a strip of `rows` rows of a picture at 1/factor of the canvas's size
+  // and AA×AA samples. The measure includes up to a frame of latency, which errs on the
+  // safe side.
+  #adapt(fence, elapsed) {
+    this.rowCost = (Math.max(elapsed, 1) * fence.factor) / (fence.rows * fence.aa * fence.aa);
+  }
+
+  // The coarsest rung: the smallest power of two (1 to 16) by which the canvas shrunk
+  // draws in about QUICK_BUDGET_MS by the last measure; 16 before this surface's first.
+  #quickFactor() {
+    if (this.rowCost === undefined) return 16;
+    const ideal = Math.sqrt((this.rowCost * this.canvas.height) / QUICK_BUDGET_MS);
+    return Math.min(16, 2 ** Math.max(0, Math.ceil(Math.log2(Math.max(ideal, 1)))));
+  }
+
+  // Where a picture at 1/factor of the canvas is drawn: the canvas itself at factor 1,
+  // else an offscreen framebuffer of that size, shown when complete (#showLowRes), so
+  // that the canvas only ever changes by whole pictures or by strips of the finest.
+  #target(factor, width, height) {
+    if (factor === 1) return { framebuffer: null, width, height };
+    const gl = this.gl;
+    const w = Math.max(1, Math.ceil(width / factor));
+    const h = Math.max(1, Math.ceil(height / factor));
+    if (!this.lowRes || this.lowRes.width !== w || this.lowRes.height !== h) {
+      if (this.lowRes) {
+        gl.deleteFramebuffer(this.lowRes.fbo);
+        gl.deleteTexture(this.lowRes.texture);
+      }
+      const texture = gl.createTexture();
+      gl.bindTexture(gl.TEXTURE_2D, texture);
+      gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, w, h);
+      const fbo = gl.createFramebuffer();
+      gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
+      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
+      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+      this.lowRes = { fbo, texture, width: w, height: h };
     }
+    return { framebuffer: this.lowRes.fbo, width: w, height: h };
+  }
+
+  // The offscreen picture, stretched over the canvas.
+  #showLowRes(width, height) {
+    const gl = this.gl;
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.lowRes.fbo);
+    gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
+    gl.blitFramebuffer(0, 0, this.lowRes.width, this.lowRes.height, 0, 0, width, height, gl.COLOR_BUFFER_BIT, gl.LINEAR);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
   }
 
   #draw(framebuffer, width, height, aa, scissor) {
@@ -693,33 +836,7 @@ export class Preview {
     gl.disable(gl.SCISSOR_TEST);
   }
 
-  // One sample per pixel at 1/lowResFactor of the size, stretched over the canvas.
-  #drawLowRes(width, height) {
-    const gl = this.gl;
-    const w = Math.max(1, Math.ceil(width / this.lowResFactor));
-    const h = Math.max(1, Math.ceil(height / this.lowResFactor));
-    if (!this.lowRes || this.lowRes.width !== w || this.lowRes.height !== h) {
-      if (this.lowRes) {
-        gl.deleteFramebuffer(this.lowRes.fbo);
-        gl.deleteTexture(this.lowRes.texture);
-      }
-      const texture = gl.createTexture();
-      gl.bindTexture(gl.TEXTURE_2D, texture);
-      gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, w, h);
-      const fbo = gl.createFramebuffer();
-      gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
-      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
-      this.lowRes = { fbo, texture, width: w, height: h };
-    }
-    this.#draw(this.lowRes.fbo, w, h, 1, null);
-    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.lowRes.fbo);
-    gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
-    gl.blitFramebuffer(0, 0, w, h, 0, 0, width, height, gl.COLOR_BUFFER_BIT, gl.LINEAR);
-    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    return h;
-  }
-
-  #publishView(width, height) {
+  #publishView(width, height, aa) {
     const d = this.canvas.dataset;
     d.dimension = String(this.surface.dimension);
     d.shape = this.surface.shape || '';
@@ -735,7 +852,7 @@ export class Preview {
     }
     d.width = String(width);
     d.height = String(height);
-    d.aa = String(this.aa);
+    d.aa = String(aa);
     d.function = this.surface.functionName;
     d.box = JSON.stringify(this.surface.box);
   }
@@ -825,7 +942,7 @@ export class Preview {
   #attachResize() {
     const apply = () => {
       const rect = this.canvas.getBoundingClientRect();
-      let ratio = Math.min(window.devicePixelRatio || 1, 2);
+      let ratio = Math.min(window.devicePixelRatio || 1, 2) * this.resolution;
       const maxPixels = 2.4e6;
       if (rect.width * rect.height * ratio * ratio > maxPixels) ratio = Math.sqrt(maxPixels / (rect.width * rect.height));
       const width = Math.max(1, Math.round(rect.width * ratio));
@@ -836,6 +953,7 @@ export class Preview {
       if (this.program) this.#startImage(true);
     };
     new ResizeObserver(apply).observe(this.canvas);
+    this.applySize = apply;
     apply();
   }
 }
