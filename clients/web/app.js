@@ -72,8 +72,13 @@ const ui = {
   glsl: $('glsl'),
   glslSummary: $('glsl-summary'),
   toast: $('toast'),
+  stageHint: $('stage-hint'),
   serverStatus: $('server-status'),
 };
+
+// The box input's placeholder as the page was loaded: a drawn surface's placeholder
+// names its fitted box, and goes when that surface does.
+const BOX_PLACEHOLDER = ui.inputs.box.placeholder;
 
 const state = {
   mode: 'parametric',
@@ -345,10 +350,35 @@ function showJobProgress(busy, job, feed) {
   data.jobUpdates = String(updates);
   ui.progressPhase.textContent = describeJobProgress(job);
   ui.progressPhase.title = ui.progressPhase.textContent; // whole, where the column cuts it
-  const fraction = job.progress?.fraction;
-  if (Number.isFinite(fraction)) ui.jobBar.value = fraction;
-  else ui.jobBar.removeAttribute('value'); // indeterminate: the loop does not know its total
+  showJobBar(busy, job);
   ui.jobBar.hidden = false;
+}
+
+// The bar never goes backwards. The server's fraction is the innermost loop's done/total
+// (docs/api.md, "Jobs"): the S-pair loop's total grows with the basis, so its fraction
+// falls, and a loop that starts again (another prime, another phase) starts from 0. A
+// fraction below the highest this job has shown makes the bar indeterminate for the
+// rest of that loop; the phase beside it keeps its counts (55/107), which say how far
+// it got without pretending to a share of the whole. data-job-bar says which.
+function showJobBar(busy, job) {
+  const p = job.progress || {};
+  if (busy.bar?.job !== job.id) busy.bar = { job: job.id, highest: 0, loop: null, counts: false };
+  const bar = busy.bar;
+  const loop = `${p.phase}|${p.stage?.phase}|${p.stage?.done}`;
+  if (loop !== bar.loop) {
+    bar.loop = loop;
+    bar.counts = false;
+  }
+  const fraction = p.fraction;
+  if (Number.isFinite(fraction) && fraction < bar.highest) bar.counts = true;
+  if (Number.isFinite(fraction) && !bar.counts) {
+    ui.jobBar.value = fraction;
+    bar.highest = fraction;
+    ui.progress.dataset.jobBar = 'fraction';
+  } else {
+    ui.jobBar.removeAttribute('value'); // indeterminate: no total, or one that moved
+    ui.progress.dataset.jobBar = bar.counts ? 'counts' : 'unknown';
+  }
 }
 
 // "F4 matrix reduction 12/40 · modular Groebner basis (primes): 2": the innermost
@@ -416,6 +446,7 @@ function clearPreview(reason, text) {
   ui.glslSummary.textContent = '';
   ui.copyGlsl.disabled = true;
   ui.stats.textContent = '';
+  ui.inputs.box.placeholder = BOX_PLACEHOLDER;
   showApproximation(null);
   hidePreviewError();
   for (const key of ['mode', 'equation', 'request']) delete ui.canvas.dataset[key];
@@ -448,10 +479,29 @@ function describeStats(result) {
   return parts.join(' · ');
 }
 
+/// Shows the equation `text` in #implicit with lines that end only between its terms:
+/// each term (split before a binary + or −) is an inline block, so a line never breaks
+/// inside a number or a name (CSS alone breaks anywhere or only at spaces, which the
+/// server's equations have none of); a term longer than the line breaks after a '*'
+/// (<wbr>). The text content stays `text`, which scripts and tests read.
+function showEquation(text) {
+  // A + or − after an operand (a name, a number, a ')', spaces allowed), not the sign
+  // of an exponent (1e-3).
+  const terms = text.split(/(?<=[\w)]\s*)(?<![0-9.][eE])(?=[+-])/);
+  ui.implicit.replaceChildren(
+    ...terms.map((term) => {
+      const span = document.createElement('span');
+      span.className = 'term';
+      term.split(/(?<=\*)/).forEach((factor, i) => span.append(...(i ? [document.createElement('wbr'), factor] : [factor])));
+      return span;
+    }),
+  );
+}
+
 function showParametricResult(result, roundTripMs) {
   const curve = Array.isArray(result.variables) && result.variables.length === 2;
   ui.resultHeading.textContent = curve ? 'Implicit curve' : 'Implicit equation';
-  ui.implicit.textContent = `${result.implicit} = 0`;
+  showEquation(`${result.implicit} = 0`);
   ui.implicit.dataset.equation = result.implicit;
   ui.degree.textContent = String(result.degree);
   ui.resultMethod.textContent = result.method === 'groebner' ? 'Gröbner' : result.method;
@@ -491,7 +541,7 @@ function showSubstitution(result) {
 
 function showImplicitResult(equation, answer, roundTripMs) {
   ui.resultHeading.textContent = 'Implicit equation (given)';
-  ui.implicit.textContent = `${equation} = 0`;
+  showEquation(`${equation} = 0`);
   ui.implicit.dataset.equation = equation;
   ui.degree.textContent = String(answer.degree);
   ui.resultMethod.textContent = 'given';
@@ -509,10 +559,18 @@ function showImplicitResult(equation, answer, roundTripMs) {
   ui.resultEmpty.hidden = true;
 }
 
+/// The lines of `glsl` as an editor counts them: a final newline ends the last line and
+/// does not start another. Every line count the page shows is this one, of the GLSL it
+/// shows and copies.
+function glslLineCount(glsl) {
+  if (!glsl) return 0;
+  return glsl.split('\n').length - (glsl.endsWith('\n') ? 1 : 0);
+}
+
 function showGlsl(answer) {
   state.glsl = answer.glsl;
   ui.glsl.textContent = answer.glsl;
-  const lines = answer.glsl.split('\n').length;
+  const lines = glslLineCount(answer.glsl);
   const shape = answer.shape ? ` · ${answer.shape}` : '';
   ui.glslSummary.textContent = `${answer.function}(${answer.dimension === 2 ? 'vec2' : 'vec3'} p) · ${answer.mode} mode${shape} · ${lines} lines`;
   ui.copyGlsl.disabled = false;
@@ -526,7 +584,7 @@ if (!preview) {
   ui.canvas.hidden = true;
   ui.noWebgl.hidden = false;
   ui.resetView.disabled = true;
-  document.querySelector('.stage-hint').hidden = true;
+  ui.stageHint.hidden = true;
   ui.previewEmpty.classList.add('below'); // under the message that WebGL2 is missing
 }
 
@@ -605,23 +663,43 @@ function requestObject(source) {
   return object;
 }
 
+// The server's reason for keeping the exact equation, without its line counts: they
+// count the leaf's own function against the pieces' (PolynomialLeaf::glsl_lines), not
+// the GLSL the page shows, and beside the one count the page gives they read as three
+// disagreeing numbers. A parenthesis holding a count goes, then any clause (between
+// colons) still holding one.
+function reasonWithoutLineCounts(reason) {
+  const count = /\b\d+ lines?\b/;
+  return reason
+    .replace(/ \([^()]*\b\d+ lines?\b[^()]*\)/g, '')
+    .split(': ')
+    .filter((clause) => !count.test(clause))
+    .join(': ');
+}
+
 // Beside the preview: how an approximated patch was built and the bound it reached
-// (docs/api.md, "approximation"), or nothing without a tolerance. The line keeps its
-// height when empty (hiding it would resize the canvas, and redraw it).
-function showApproximation(a) {
+// (docs/api.md, "approximation"), or nothing without a tolerance; `lines` is the
+// shown GLSL's line count (glslLineCount). The line keeps its height when empty (hiding
+// it would resize the canvas, and redraw it). data-reason keeps the server's reason whole.
+function showApproximation(a, lines) {
   if (!a) {
     ui.approximation.textContent = '';
+    ui.approximation.title = '';
     delete ui.approximation.dataset.bound;
+    delete ui.approximation.dataset.reason;
     return;
   }
   const bound = (b) => `${Number(b.bound.toPrecision(2))} (${b.method}${b.method === 'measured' ? ` on ${b.samples} points` : ''})`;
-  const size = `degree ${a.degree} × ${a.pieces} piece${a.pieces === 1 ? '' : 's'} · ${a.glsl_lines} GLSL lines`;
+  const size = `degree ${a.degree} × ${a.pieces} piece${a.pieces === 1 ? '' : 's'} · ${lines} GLSL lines`;
   if (a.exact) {
-    ui.approximation.textContent = `Tolerance ${a.tolerance}: exact, error 0 — ${a.reason} · ${size}`;
+    ui.approximation.dataset.reason = a.reason;
+    ui.approximation.textContent = `Tolerance ${a.tolerance}: exact, error 0 — ${reasonWithoutLineCounts(a.reason)} · ${size}`;
   } else {
+    delete ui.approximation.dataset.reason;
     ui.approximation.textContent = `Tolerance ${a.tolerance} of the box diagonal: patch → surface ≤ ${bound(a.patch_to_surface)}, ` +
       `surface → patch ≤ ${bound(a.surface_to_patch)} · ${size}`;
   }
+  ui.approximation.title = ui.approximation.textContent; // whole, where the line is cut short
   ui.approximation.dataset.bound = String(Math.max(a.patch_to_surface.bound, a.surface_to_patch.bound));
 }
 
@@ -678,7 +756,7 @@ async function drawSurface(source, equation, box, name, busy) {
     side = { glsl: signed.glsl, functionName: signed.function };
   }
   showGlsl(answer);
-  showApproximation(answer.approximation);
+  showApproximation(answer.approximation, glslLineCount(answer.glsl));
   hidePreviewError();
   ui.inputs.box.placeholder = `automatic (now ${answerBox.map((v) => Number(v.toPrecision(6))).join(', ')})`;
   const drawn = { source, equation, box, name, mode, shape, answerBox, dimension };
@@ -719,6 +797,8 @@ function showDrawn(busy, drawn) {
   state.drawn = drawn;
   busy.drawn = true;
   ui.previewEmpty.hidden = true;
+  // What dragging does here (preview.js #attachInput): a curve pans, a surface orbits.
+  ui.stageHint.textContent = `${drawn.dimension === 2 ? 'drag to pan' : 'drag to orbit'} · scroll or pinch to zoom · double-click to reset`;
 }
 
 function surfaceName() {

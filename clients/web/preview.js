@@ -40,9 +40,9 @@
 //
 // Plane curves (the answer's "dimension" is 2, `float NAME_sdf(vec2 p)`) are drawn
 // flat by another fragment shader that mirrors render_curve.cpp: the box fills the
-// canvas with its aspect kept, a faint grid and the axes, the curve a 1.5 px line
-// antialiased from |value| in pixels, a solid curve's inside tinted. Drag pans, the
-// wheel zooms about the pointer.
+// canvas with its aspect kept, less a margin (defaultPlaneView), a faint grid and the
+// axes, the curve a 1.5 px line antialiased from |value| in pixels, a solid curve's
+// inside tinted. Drag pans, the wheel and a pinch zoom about the canvas's centre.
 //
 // The image is drawn progressively (#startImage): complete pictures at a quarter, a
 // half, ... of the resolution first, the coarsest drawn within QUICK_BUDGET_MS, then the
@@ -80,12 +80,20 @@ export function defaultCamera(box, aspect = 1) {
   return { target: centre, eye: add(centre, scale(direction, distance)), unit: half / 2 };
 }
 
-/// The 2-D view of a curve's box [x0, y0, x1, y1] in a width × height image
-/// (render_curve.cpp curve_view): the box's centre, pixels per unit, the grid step.
+// The margin around a curve's box, a share of the canvas's smaller side: the fitted box
+// is the curve's own bounding box, so without it the line touches the canvas's edges.
+const PLANE_MARGIN = 0.05;
+
+/// The 2-D view of a curve's box [x0, y0, x1, y1] in a width × height image: the box's
+/// centre, pixels per unit, the grid step's extent. It is render_curve.cpp curve_view
+/// of a (width − 2m) × (height − 2m) image, m = round(PLANE_MARGIN · min(width, height))
+/// pixels, centred: the CPU renderer's picture at that size, framed by m pixels of margin.
 export function defaultPlaneView(box, width, height) {
   const [x0, y0, x1, y1] = box;
   const extent = Math.max(x1 - x0, y1 - y0);
-  return { centre: [(x0 + x1) / 2, (y0 + y1) / 2], scale: Math.min(width / (x1 - x0), height / (y1 - y0)), extent };
+  const m = Math.round(PLANE_MARGIN * Math.min(width, height));
+  const scale = Math.min(Math.max(1, width - 2 * m) / (x1 - x0), Math.max(1, height - 2 * m) / (y1 - y0));
+  return { centre: [(x0 + x1) / 2, (y0 + y1) / 2], scale, extent };
 }
 
 /// The grid step of render_curve.cpp: the smallest 1, 2 or 5 × 10^k ≥ extent/10.
@@ -564,7 +572,8 @@ export class Preview {
     if (this.program) this.#startImage(false);
   }
 
-  /// Back to the default camera of the surface's box (a curve: the box filling the canvas).
+  /// Back to the default camera of the surface's box (a curve: the box filling the canvas
+  /// but for a margin).
   resetView({ redraw = true } = {}) {
     if (!this.surface) return;
     const { width, height } = this.canvas;

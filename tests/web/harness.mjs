@@ -166,3 +166,39 @@ export function silhouette(rgb, width, height) {
   }
   return mask;
 }
+
+/// The preview canvas's pixels on `page` (a complete image: data-state "done"), rows top
+/// to bottom, RGB, as {width, height, rgb, view: the canvas's data- attributes}.
+export async function readPreviewCanvas(page) {
+  const result = await page.evaluate(() => {
+    const canvas = document.getElementById('preview');
+    const gl = canvas.getContext('webgl2');
+    const { width, height } = canvas;
+    const rgba = new Uint8Array(width * height * 4);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
+    let binary = '';
+    for (let i = 0; i < rgba.length; i += 0x8000) binary += String.fromCharCode.apply(null, rgba.subarray(i, i + 0x8000));
+    return { width, height, rgba: btoa(binary), dataset: { ...canvas.dataset } };
+  });
+  assert.equal(result.dataset.state, 'done', 'the image was complete when read');
+  const { width, height } = result;
+  const rgba = Buffer.from(result.rgba, 'base64');
+  const rgb = new Uint8Array(width * height * 3);
+  for (let y = 0; y < height; ++y) {
+    const src = (height - 1 - y) * width * 4; // readPixels' rows start at the bottom
+    for (let x = 0; x < width; ++x) for (let k = 0; k < 3; ++k) rgb[(y * width + x) * 3 + k] = rgba[src + 4 * x + k];
+  }
+  return { width, height, rgb, view: result.dataset };
+}
+
+/// Drags the mouse on the preview canvas of `page` from its centre by (dx, dy) CSS
+/// pixels in `steps` moves, and leaves the pointer there.
+export async function dragPreview(page, dx, dy, steps = 2) {
+  const rect = await page.locator('#preview').boundingBox();
+  const cx = rect.x + rect.width / 2, cy = rect.y + rect.height / 2;
+  await page.mouse.move(cx, cy);
+  await page.mouse.down();
+  await page.mouse.move(cx + dx, cy + dy, { steps });
+  await page.mouse.up();
+}
