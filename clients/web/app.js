@@ -69,6 +69,7 @@ const ui = {
   resolution: $('resolution'),
   resetView: $('reset-view'),
   copyGlsl: $('copy-glsl'),
+  downloadGlsl: $('download-glsl'),
   glsl: $('glsl'),
   glslSummary: $('glsl-summary'),
   toast: $('toast'),
@@ -88,6 +89,7 @@ const state = {
   answered: null, // {source, equation, box, name}: the surface whose answer is shown (a mode switch redraws it)
   boxFromExample: false, // the box input holds the example's box (refilled when the tab changes)
   glsl: '', // the last GLSL POST /v1/sdf returned
+  glslFunction: '', // its function's name, which names the downloaded file
 };
 
 // ---------------------------------------------------------------- formatting
@@ -114,6 +116,11 @@ function itemsOf(text) {
   let m;
   while ((m = re.exec(text))) parts.push({ value: m[0], position: m.index });
   return parts;
+}
+
+// The items of a list typed as text, without their positions.
+function itemValues(text) {
+  return itemsOf(text).map((p) => p.value);
 }
 
 /// Parses "x0, y0, z0, x1, y1, z1" or, for a curve, "x0, y0, x1, y1" (commas or
@@ -164,7 +171,7 @@ function parseTolerance(text) {
 /// order. Only emptiness is checked here: the names themselves are the server's to judge
 /// (invalid_parameter, parameter_is_space_variable, unknown_variable), as for every client.
 function parseParameters(text) {
-  const names = itemsOf(text).map((p) => p.value);
+  const names = itemValues(text);
   if (names.length === 0) {
     throw new ApiError({ status: 0, code: 'invalid_parameter', message: 'name the parameters, e.g. s, t (a curve: t)', position: 0, field: 'params' });
   }
@@ -442,9 +449,10 @@ function clearPreview(reason, text) {
   }
   state.drawn = null;
   state.glsl = '';
+  state.glslFunction = '';
   ui.glsl.textContent = '';
   ui.glslSummary.textContent = '';
-  ui.copyGlsl.disabled = true;
+  enableGlslButtons(false);
   ui.stats.textContent = '';
   ui.inputs.box.placeholder = BOX_PLACEHOLDER;
   showApproximation(null);
@@ -569,11 +577,18 @@ function glslLineCount(glsl) {
 
 function showGlsl(answer) {
   state.glsl = answer.glsl;
+  state.glslFunction = answer.function;
   ui.glsl.textContent = answer.glsl;
   const lines = glslLineCount(answer.glsl);
   const shape = answer.shape ? ` · ${answer.shape}` : '';
   ui.glslSummary.textContent = `${answer.function}(${answer.dimension === 2 ? 'vec2' : 'vec3'} p) · ${answer.mode} mode${shape} · ${lines} lines`;
-  ui.copyGlsl.disabled = false;
+  enableGlslButtons(true);
+}
+
+// Copy and Download act on the GLSL shown: off while there is none.
+function enableGlslButtons(enabled) {
+  ui.copyGlsl.disabled = !enabled;
+  ui.downloadGlsl.disabled = !enabled;
 }
 
 // ---------------------------------------------------------------- preview
@@ -968,7 +983,7 @@ function redrawInMode() {
 /// Labels the coordinates x(u,v), y(u,v), z(u,v) and the domain's numbers (u₀, u₁, v₀,
 /// v₁) with the names in the parameters field, as typed.
 function labelParameters() {
-  const names = itemsOf(ui.inputs.params.value).map((p) => p.value);
+  const names = itemValues(ui.inputs.params.value);
   for (const label of ui.coordinateLabels) {
     label.replaceChildren();
     names.forEach((name, i) => {
@@ -1031,8 +1046,14 @@ function applyExample(name, { submit = true } = {}) {
   if (example.implicit) ui.inputs.equation.value = example.implicit;
   ui.inputs.box.value = exampleBox(example, state.mode);
   state.boxFromExample = true;
-  if (!submit) return;
-  if (state.mode === 'implicit' && example.implicit) submitImplicit();
+  if (submit) submitShown();
+}
+
+// Submits the tab shown; an example without an equation of its own is implicitized
+// from its parametrization in either tab.
+function submitShown() {
+  const example = state.examples.find((e) => e.name === ui.examples.value);
+  if (state.mode === 'implicit' && (!example || example.implicit)) submitImplicit();
   else submitParametric();
 }
 
@@ -1133,6 +1154,30 @@ ui.copyGlsl.addEventListener('click', async () => {
   window.getSelection().selectAllChildren(ui.glsl);
   toast('Could not copy: the GLSL is selected below');
 });
+
+/// Saves `text` as the file `filename` (text/plain): a Blob behind an <a download>,
+/// clicked. The address is freed later, not at once: the browser reads the Blob after
+/// the click returns.
+function downloadText(text, filename) {
+  const url = URL.createObjectURL(new Blob([text], { type: 'text/plain' }));
+  const link = document.createElement('a');
+  link.href = url;
+  link.download = filename;
+  link.hidden = true;
+  document.body.append(link);
+  link.click();
+  link.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 60000);
+}
+
+// The file is named after the function it holds (NAME_sdf.glsl), what a shader
+// that includes it calls.
+ui.downloadGlsl.addEventListener('click', () => {
+  if (!state.glsl) return;
+  const filename = `${state.glslFunction}.glsl`;
+  downloadText(state.glsl, filename);
+  toast(`GLSL saved as ${filename}`);
+});
 $('copy-implicit').addEventListener('click', async () => {
   const text = ui.implicit.dataset.equation || '';
   toast((await copyText(text)) ? 'Equation copied' : 'Could not copy');
@@ -1144,24 +1189,137 @@ for (const button of document.querySelectorAll('[data-copy]')) {
   });
 }
 
+// ---------------------------------------------------------------- the address
+
+// The address holds the input and the view, so that a copied link draws the same
+// surface: the example's name while its fields are as it set them (example=NAME),
+// else the fields themselves (params, x, y, z, domain; input=implicit with equation),
+// then box, tolerance, mode, shape and aa, and method and timeout where they are not
+// the defaults. It follows the user (a submission, a setting, an edited field) by
+// history.replaceState: a link is a state to share, not a step to go back to.
+
+const PARAMETRIC_INPUTS = ['params', 'x', 'y', 'z', 'domain'];
+const LISTS = ['params', 'domain', 'box']; // written u,v: the items as the parsers see them
+
+/// The address's parameters for what the page shows now (`api` kept as it came).
+function addressParameters() {
+  const params = new URLSearchParams();
+  const api = new URLSearchParams(window.location.search).get('api');
+  if (api) params.set('api', api);
+  if (state.mode === 'implicit') params.set('input', 'implicit');
+  addSurface(params);
+  if (state.mode === 'parametric') {
+    params.set('tolerance', ui.inputs.tolerance.value.trim()); // empty: the exact equation
+    for (const select of [ui.method, ui.timeout]) if (!select.selectedOptions[0]?.defaultSelected) params.set(select.id, select.value);
+  }
+  params.set('mode', currentMode());
+  params.set('shape', ui.shape.value);
+  params.set('aa', ui.aa.value);
+  return params;
+}
+
+// The surface: the example's name while its fields are as it set them, else the tab's
+// fields; the box where it is not the example's, or not empty.
+function addSurface(params) {
+  if (ui.examples.value) {
+    params.set('example', ui.examples.value);
+    if (!state.boxFromExample) params.set('box', fieldForAddress('box'));
+    return;
+  }
+  for (const name of state.mode === 'implicit' ? ['equation'] : PARAMETRIC_INPUTS) params.set(name, fieldForAddress(name));
+  if (ui.inputs.box.value.trim()) params.set('box', fieldForAddress('box'));
+}
+
+function fieldForAddress(name) {
+  const text = ui.inputs[name].value;
+  return LISTS.includes(name) ? itemValues(text).join(',') : text;
+}
+
+function fieldFromAddress(name, value) {
+  ui.inputs[name].value = LISTS.includes(name) ? itemValues(value).join(', ') : value;
+}
+
+// URLSearchParams would write every comma and slash as %2C and %2F: a link of a domain
+// "0,1/2,-1,1" and of "2*s/(1+s^2)" stays readable with them as they are (both are
+// allowed in a query).
+function queryOf(params) {
+  const encode = (text) => encodeURIComponent(text).replace(/%2C/g, ',').replace(/%2F/g, '/').replace(/%20/g, '+');
+  return [...params].map(([key, value]) => `${key}=${encode(value)}`).join('&');
+}
+
+/// Rewrites the address for what the page shows now, without a new history entry.
+function writeAddress() {
+  const query = queryOf(addressParameters());
+  if (query !== window.location.search.slice(1)) history.replaceState(history.state, '', `?${query}${window.location.hash}`);
+}
+
+// Selects `value` in `select` if it is one of its options: a value from the address
+// that the page does not offer leaves the default.
+function chooseOption(select, value) {
+  if ([...select.options].some((o) => o.value === value)) select.value = value;
+}
+
+// The address's settings (mode, shape, aa, method, timeout, tolerance) onto the page; a
+// value the page does not offer is ignored.
+function applySettings(params) {
+  for (const select of [ui.aa, ui.shape, ui.method, ui.timeout]) chooseOption(select, params.get(select.id));
+  const mode = params.get('mode');
+  if (mode === 'fast' || mode === 'safe') $(`mode-${mode}`).checked = true;
+  if (params.has('tolerance')) ui.inputs.tolerance.value = params.get('tolerance');
+  if (preview) preview.setAntialiasing(Number(ui.aa.value));
+}
+
+/// Applies the address's settings and returns its surface: {example, input, fields,
+/// box}, `fields` the inputs it gives (null: none, an example then, by default the
+/// initial one) and `box` null when absent.
+function readAddress() {
+  const params = new URLSearchParams(window.location.search);
+  applySettings(params);
+  const input = params.get('input') === 'implicit' ? 'implicit' : 'parametric';
+  const names = input === 'implicit' ? ['equation'] : PARAMETRIC_INPUTS;
+  const given = names.some((name) => params.has(name));
+  // An absent field is empty, but for the parameters: s, t as on a fresh page.
+  const absent = (name) => (name === 'params' ? DEFAULT_PARAMETERS.join(',') : '');
+  const fields = given ? Object.fromEntries(names.map((name) => [name, params.get(name) ?? absent(name)])) : null;
+  const example = params.get('example') ?? (given ? null : INITIAL_EXAMPLE);
+  return { example, input, fields, box: params.get('box') };
+}
+
+/// Fills the inputs with the address's surface (an example or its fields) and submits
+/// it; nothing when the address names an unknown example and gives no fields.
+function showAddressed(address) {
+  if (state.examples.some((e) => e.name === address.example)) {
+    applyExample(address.example, { submit: false });
+  } else if (address.fields) {
+    for (const [name, value] of Object.entries(address.fields)) fieldFromAddress(name, value);
+    labelParameters();
+    ui.examples.value = ''; // a surface of one's own
+    ui.inputs.box.value = '';
+  } else {
+    return;
+  }
+  if (address.box !== null) {
+    fieldFromAddress('box', address.box);
+    state.boxFromExample = false;
+  }
+  submitShown();
+}
+
+// The user's changes (a field, a menu, a mode; `change` bubbles up to here), tab and
+// submission rewrite the address. The page's own filling at the start does not: the
+// address it came with stays until the user works.
+document.querySelector('main').addEventListener('change', writeAddress);
+for (const form of Object.values(ui.forms)) form.addEventListener('submit', writeAddress);
+for (const tab of Object.values(ui.tabs)) {
+  tab.addEventListener('click', writeAddress);
+  tab.addEventListener('keydown', writeAddress);
+}
+
 // ---------------------------------------------------------------- start
 
 function updateServerStatus(ok) {
   ui.serverStatus.dataset.state = ok ? 'ok' : 'down';
   ui.serverStatus.querySelector('.text').textContent = ok ? `server ok · ${apiHost}` : `server unreachable · ${apiHost}`;
-}
-
-// Settings from the address: ?example=NAME&mode=fast|safe&shape=auto|sheet|solid&aa=N&input=implicit.
-function readAddress() {
-  const params = new URLSearchParams(window.location.search);
-  const aa = params.get('aa');
-  if (aa && [...ui.aa.options].some((o) => o.value === aa)) ui.aa.value = aa;
-  const mode = params.get('mode');
-  if (mode === 'fast' || mode === 'safe') $(`mode-${mode}`).checked = true;
-  const shape = params.get('shape');
-  if ([...ui.shape.options].some((o) => o.value === shape)) ui.shape.value = shape;
-  if (preview) preview.setAntialiasing(Number(ui.aa.value));
-  return { example: params.get('example') || INITIAL_EXAMPLE, input: params.get('input') === 'implicit' ? 'implicit' : 'parametric' };
 }
 
 async function start() {
@@ -1176,7 +1334,7 @@ async function start() {
     ui.generalError.textContent = `Could not load the examples: ${error.message}`;
     ui.generalError.hidden = false;
   }
-  if (state.examples.some((e) => e.name === address.example)) applyExample(address.example);
+  showAddressed(address);
   document.body.dataset.ready = 'true';
 }
 

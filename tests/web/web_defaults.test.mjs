@@ -20,7 +20,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { examplesPath } from '../../scripts/make-web-examples.mjs';
-import { BACKGROUND, launchChromium, sharedDir, startServer, stopServer, watchErrors } from './harness.mjs';
+import { BACKGROUND, launchChromium, readPreviewCanvas, sharedDir, startServer, stopServer, watchErrors } from './harness.mjs';
 
 const IOU_MIN = 0.97;
 const HOLE_FRACTION_MAX = 1e-3; // of the patch's pixels: stray pixels, not a hole
@@ -47,23 +47,14 @@ async function waitForDone(after) {
   );
 }
 
-/// The canvas as a hit mask: 1 where a pixel differs from the background grey.
+/// The finished picture as a hit mask: 1 where a pixel differs from the background grey.
 async function hitMask() {
-  const { width, height, mask } = await page.evaluate((background) => {
-    const canvas = document.getElementById('preview');
-    const gl = canvas.getContext('webgl2');
-    const { width, height } = canvas;
-    const rgba = new Uint8Array(width * height * 4);
-    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, rgba);
-    let bits = '';
-    for (let i = 0; i < width * height; ++i) {
-      const hit = Math.abs(rgba[4 * i] - background) + Math.abs(rgba[4 * i + 1] - background) + Math.abs(rgba[4 * i + 2] - background) > 6;
-      bits += hit ? '1' : '0';
-    }
-    return { width, height, mask: bits };
-  }, BACKGROUND);
-  return { width, height, mask: Uint8Array.from(mask, (c) => (c === '1' ? 1 : 0)) };
+  const { width, height, rgb } = await readPreviewCanvas(page);
+  const mask = new Uint8Array(width * height);
+  for (let i = 0; i < mask.length; ++i) {
+    mask[i] = Math.abs(rgb[3 * i] - BACKGROUND) + Math.abs(rgb[3 * i + 1] - BACKGROUND) + Math.abs(rgb[3 * i + 2] - BACKGROUND) > 6 ? 1 : 0;
+  }
+  return { width, height, mask };
 }
 
 function iou(a, b) {
