@@ -718,19 +718,6 @@ function showApproximation(a, lines) {
   ui.approximation.dataset.bound = String(Math.max(a.patch_to_surface.bound, a.surface_to_patch.bound));
 }
 
-// The box [x0, y0, z0, x1, y1, z1] scaled by `factor` about its centre.
-function widenedBox(box, factor) {
-  const half = box.length / 2;
-  const out = [...box];
-  for (let i = 0; i < half; ++i) {
-    const c = (box[i] + box[i + half]) / 2;
-    const h = ((box[i + half] - box[i]) / 2) * factor;
-    out[i] = c - h;
-    out[i + half] = c + h;
-  }
-  return out;
-}
-
 /// POST /v1/sdf for `source` ({implicit} or {x, y, z, domain}) in the current mode,
 /// shape and box, then compiles it into the preview. A sheet in space also gets its
 /// equation F as a signed solid (the side function, preview.js says why). `equation`
@@ -759,14 +746,8 @@ async function drawSurface(source, equation, box, name, busy) {
     // when F has no z (a cylinder over a curve), where {implicit} would be a plane curve.
     const implicit = answer.leaves?.[0]?.implicit || equation;
     const scene = { type: 'implicit', equation: implicit, shape: 'solid' };
-    // In a box twice the sheet's: a solid is positive outside its box, so in the
-    // sheet's own box the side would change sign on the box's faces too, and a fast
-    // step that crosses a face and the sheet (F/|grad F| overshoots far from the
-    // surface) would see the same sign at both ends and miss the sheet. Outside the
-    // sheet's box a step stops at its faces, so the larger box's faces are crossed apart.
-    const sideBox = widenedBox(answerBox, 2);
     // A plain POST, not a job: the comment at the top of this file says why.
-    const signed = await postJson('/v1/sdf', sdfRequest({ scene, mode: 'fast', box: sideBox, name: `${name}_side`, timeoutMs }), { signal });
+    const signed = await postJson('/v1/sdf', sdfRequest({ scene, mode: 'fast', box: answerBox, name: `${name}_side`, timeoutMs }), { signal });
     signal.throwIfAborted();
     side = { glsl: signed.glsl, functionName: signed.function };
   }

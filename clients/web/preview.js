@@ -104,6 +104,12 @@ export function gridStep(extent) {
   return 10 * base;
 }
 
+// The corners of a box [x0, y0, z0, x1, y1, z1] moved in by `fraction` of its largest side.
+function insetBox(box, fraction) {
+  const d = fraction * Math.max(box[3] - box[0], box[4] - box[1], box[5] - box[2]);
+  return [[box[0] + d, box[1] + d, box[2] + d], [box[3] - d, box[4] - d, box[5] - d]];
+}
+
 /// The camera frame of docs/render.md §2 (camera.cpp): forward towards the target,
 /// right = normalize(forward × up), up = right × forward.
 export function cameraFrame(eye, target) {
@@ -194,7 +200,15 @@ ${side.glsl}
 float pv_map(vec3 p) { return ${surface.functionName}(p); }
 ${tetrahedronNormal('pv_normal', 'pv_map')}
 ${side ? `float pv_signed(vec3 p) { return ${side.functionName}(p); }
-${tetrahedronNormal('pv_signed_normal', 'pv_signed')}` : ''}
+${tetrahedronNormal('pv_signed_normal', 'pv_signed')}
+// The side's sign where the march asks for it: at p pulled into the sheet's box (less a
+// hair). A distance function is positive outside its box, so the sign would also change
+// on the box's faces, and a fast step that crosses a face and the sheet would see the
+// same sign at both ends and miss the sheet. Pulled in, the sign field is continuous
+// across the faces and changes only where the side does, inside the box.
+uniform vec3 pv_side_lo;
+uniform vec3 pv_side_hi;
+float pv_side_sign(vec3 p) { return sign(pv_signed(clamp(p, pv_side_lo, pv_side_hi))); }` : ''}
 
 // The improved soft shadow (shading.cpp soft_shadow): k = 1.5, from 0.02u to 2.5u.
 float pv_shadow(vec3 p, vec3 l) {
@@ -265,7 +279,7 @@ float pv_march_sheet(vec3 ro, vec3 rd, float eps) {
     float q = phase == 0 ? t : phase == 1 ? mix(lastT, endT, float(part) / 16.0) : 0.5 * (a + b);
     vec3 p = ro + q * rd;
     float f = pv_map(p);
-    float s = sign(pv_signed(p));
+    float s = pv_side_sign(p);
     if (phase == 0) {
       if (f < eps) return t;
       if (s != 0.0 && lastSign != 0.0 && s != lastSign) {
@@ -508,6 +522,11 @@ export class Preview {
         : ['pv_eye', 'pv_right', 'pv_up', 'pv_forward', 'pv_resolution', 'pv_aa', 'pv_unit', 'pv_tmax'];
     this.locations = Object.fromEntries(names.map((n) => [n, gl.getUniformLocation(program, n)]));
     gl.useProgram(program);
+    if (surface.side && surface.dimension !== 2) {
+      const [lo, hi] = insetBox(surface.box, 1e-5);
+      gl.uniform3fv(gl.getUniformLocation(program, 'pv_side_lo'), lo);
+      gl.uniform3fv(gl.getUniformLocation(program, 'pv_side_hi'), hi);
+    }
     // The scene's own uniforms at their defaults (docs/sdf.md, "Uniforms").
     for (const u of surface.uniforms || []) {
       const location = gl.getUniformLocation(program, u.name);
