@@ -44,8 +44,8 @@
 // axes, the curve a 1.5 px line antialiased from |value| in pixels, a solid curve's
 // inside tinted. Drag pans, the wheel and a pinch zoom about the canvas's centre.
 //
-// The image is drawn progressively (#startImage): complete pictures at a quarter, a
-// half, ... of the resolution first, the coarsest drawn within QUICK_BUDGET_MS, then the
+// The image is drawn progressively (#startImage): complete pictures at 1/16, 1/4 ... of
+// the resolution first, the coarsest drawn within QUICK_BUDGET_MS, then the
 // full resolution, then the page's anti-aliasing, in horizontal strips sized so that
 // each takes about STRIP_BUDGET_MS on the GPU (measured with fences). A software GL or
 // a heavy shader thus shows a whole picture early and never blocks the page or holds
@@ -661,7 +661,7 @@ export class Preview {
   }
 
   // Begins a new image. `preview` (a new surface, camera or canvas size): a ladder of
-  // complete pictures, each at twice the resolution of the last (one sample per pixel,
+  // complete pictures, each at four times the resolution of the last (one sample per pixel,
   // stretched over the canvas), from the coarsest that fits QUICK_BUDGET_MS, to the full
   // resolution; then, when the page asks for AA×AA > 1, the full resolution again at
   // AA×AA (state "refining" until then). Each picture is counted in data-pictures (its
@@ -742,9 +742,10 @@ export class Preview {
     requestAnimationFrame(finish);
   }
 
-  // A complete picture is on the canvas: count it, then climb to the next rung (twice
-  // the resolution, or straight to the finest that fits the quick budget), then to the
-  // page's AA, or finish.
+  // A complete picture is on the canvas: count it, then climb to the next rung (four
+  // times the resolution each way, or straight to the finest that fits the quick
+  // budget: the rungs below the full resolution then cost a fifteenth of it), then to
+  // the page's AA, or finish.
   #pictureDone(work, width, height) {
     const d = this.canvas.dataset;
     d.pictures = String(Number(d.pictures || 0) + 1);
@@ -752,7 +753,7 @@ export class Preview {
     const ms = performance.now() - work.started;
     const next = { rung: work.rung + 1, started: work.started };
     if (work.factor > 1) {
-      Object.assign(next, { factor: Math.min(work.factor / 2, this.#quickFactor()), aa: 1 });
+      Object.assign(next, { factor: Math.max(1, Math.min(work.factor / 4, this.#quickFactor())), aa: 1 });
     } else if (work.aa < this.aa) {
       Object.assign(next, { factor: 1, aa: this.aa });
     } else {

@@ -215,7 +215,7 @@ test('values the page does not offer are ignored: the defaults stand', async () 
   assert.equal(shown.aa, '2');
   assert.equal(shown.shape, 'auto');
   assert.equal(shown.method, 'auto');
-  assert.equal(shown.timeout, '10000');
+  assert.equal(shown.timeout, '0', 'the Limit stays none');
   assert.equal(shown.tab, 'parametric');
   assert.equal(shown.examples, 'unit_sphere');
   assert.equal(await page.getAttribute('#preview', 'data-function'), 'unit_sphere_sdf');
