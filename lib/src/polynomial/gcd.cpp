@@ -80,6 +80,9 @@ Polynomial gcd(const Polynomial& a, const Polynomial& b) {
   if (a.is_zero()) return b.primitive_part();
   if (b.is_zero()) return a.primitive_part();
   if (a.is_constant() || b.is_constant()) return Polynomial::constant(a.ring(), Rational(1));
+  // A common factor would have to be free of every variable of both: a constant. Saves
+  // FLINT's conversion of the large denominators of products of separate parameters.
+  if (!share_a_variable(a, b)) return Polynomial::constant(a.ring(), Rational(1));
   FlintContext ctx(a.ring()->num_variables());
   FlintPolynomial fa(ctx), fb(ctx), g(ctx);
   to_flint(a, fa, ctx);
@@ -90,7 +93,7 @@ Polynomial gcd(const Polynomial& a, const Polynomial& b) {
   return from_flint(g, ctx, a.ring(), Rational(1)).primitive_part();
 }
 
-Polynomial lcm(const Polynomial& a, const Polynomial& b) {
+Polynomial lcm(const Polynomial& a, const Polynomial& b, const Budget& budget) {
   if (a.is_zero() || b.is_zero()) return Polynomial(a.ring());
   // The common cases of a common denominator (polynomial coordinates, one shared
   // denominator) without FLINT's context, which costs more than these answers: tens
@@ -98,8 +101,14 @@ Polynomial lcm(const Polynomial& a, const Polynomial& b) {
   if (a.is_constant()) return b.primitive_part();
   if (b.is_constant()) return a.primitive_part();
   Polynomial pa = a.primitive_part();
-  if (pa == b.primitive_part()) return pa;
-  return divide_exact(a.primitive_part() * b.primitive_part(), gcd(a, b)).primitive_part();
+  const Polynomial pb = b.primitive_part();
+  if (pa == pb) return pa;
+  // a·(b/g), not (a·b)/g: the only large polynomial is the lcm itself, built once by a
+  // multiplication that `budget` can refuse before or while it grows; FLINT, which
+  // cannot be interrupted, sees only the factors.
+  const Polynomial g = gcd(pa, pb);
+  budget.check("the least common multiple");
+  return pa.multiply(g.is_constant() ? pb : divide_exact(pb, g), budget).primitive_part();
 }
 
 Polynomial square_free_part(const Polynomial& a, std::size_t var) {

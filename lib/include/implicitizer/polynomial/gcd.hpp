@@ -10,8 +10,9 @@ namespace implicitizer {
 /// gcd(a, b) as a primitive integer polynomial with positive leading coefficient;
 /// gcd(0, 0) = 0.
 Polynomial gcd(const Polynomial& a, const Polynomial& b);
-/// lcm(a, b), primitive with positive leading coefficient; 0 if either is 0.
-Polynomial lcm(const Polynomial& a, const Polynomial& b);
+/// lcm(a, b), primitive with positive leading coefficient; 0 if either is 0. Its one
+/// product is checked against `budget` (Polynomial::multiply).
+Polynomial lcm(const Polynomial& a, const Polynomial& b, const Budget& budget = Budget());
 /// The square-free part of `a` with respect to its variable `var`: a / gcd(a, ∂a/∂var),
 /// primitive with positive leading coefficient. When a = c·f^l with f irreducible and
 /// involving var, this is f (Theorem 1.13 of the seed thesis: f ∤ ∂f/∂var because the
