@@ -38,10 +38,10 @@ Polynomial lcm_of_members(const std::vector<Polynomial>& members, const RingPtr&
   for (const Polynomial& q : members) {
     if (q.is_constant()) continue;
     std::vector<Polynomial> common;
-    for (const Polynomial& p : seen) common.push_back(gcd(p, q));
+    for (const Polynomial& p : seen) common.push_back(gcd(p, q, budget));
     const Polynomial g = lcm_of_members(common, ring, budget);
     if (!g.is_constant() && g.num_terms() == q.num_terms() && g == q.primitive_part()) continue;  // q | w
-    w = w.multiply(g.is_constant() ? q : divide_exact(q, g), budget).primitive_part();
+    w = w.multiply(g.is_constant() ? q : divide_exact(q, g, budget), budget).primitive_part();
     seen.push_back(q);
   }
   return w;
@@ -68,7 +68,7 @@ std::vector<Polynomial> common_denominator_form(const Parametrization& p, const 
     // prime factor), again without dividing ω itself.
     std::vector<Polynomial> rest;
     for (std::size_t j = 0; j < q.size(); ++j) {
-      if (j != i) rest.push_back(divide_exact(q[j], gcd(q[j], q[i])));
+      if (j != i) rest.push_back(divide_exact(q[j], gcd(q[j], q[i], phased), phased));
     }
     forms.push_back(p.coordinates[i].numerator().multiply(lcm_of_members(rest, p.parameter_ring, phased), phased));
   }

@@ -13,7 +13,9 @@ namespace {
 // request's limit (issue 41).
 
 // a/g for a g that divides a (g = 1 often: no FLINT call then).
-Polynomial without(const Polynomial& a, const Polynomial& g) { return g.is_constant() ? a : divide_exact(a, g); }
+Polynomial without(const Polynomial& a, const Polynomial& g, const Budget& budget) {
+  return g.is_constant() ? a : divide_exact(a, g, budget);
+}
 
 }  // namespace
 
@@ -24,8 +26,8 @@ RationalFunction::RationalFunction(const Polynomial& n, const Polynomial& d) : n
   if (d.is_zero()) throw InputError("division_by_zero", "the denominator is the zero polynomial");
   if (!n.is_zero()) {
     const Polynomial g = gcd(n, d);
-    numerator_ = without(n, g);
-    denominator_ = without(d, g);
+    numerator_ = without(n, g, Budget());
+    denominator_ = without(d, g, Budget());
   }
   normalize();
 }
@@ -57,24 +59,24 @@ RationalFunction RationalFunction::add(const RationalFunction& o, const Budget& 
   // t / ((b/g)·d), t = a·(d/g) + c·(b/g), and a factor common to t and the
   // denominator divides g (a prime of b/g divides c·(b/g) but not a·(d/g)), so only
   // gcd(t, g) remains to cancel.
-  const Polynomial g = denominator_ == o.denominator_ ? denominator_ : gcd(denominator_, o.denominator_);
-  const Polynomial b_g = without(denominator_, g);
-  const Polynomial d_g = without(o.denominator_, g);
+  const Polynomial g = denominator_ == o.denominator_ ? denominator_ : gcd(denominator_, o.denominator_, budget);
+  const Polynomial b_g = without(denominator_, g, budget);
+  const Polynomial d_g = without(o.denominator_, g, budget);
   const Polynomial t = numerator_.multiply(d_g, budget) + o.numerator_.multiply(b_g, budget);
   if (t.is_zero()) return RationalFunction(t);
-  const Polynomial h = gcd(t, g);
-  return from_coprime(without(t, h), b_g.multiply(without(o.denominator_, h), budget));
+  const Polynomial h = gcd(t, g, budget);
+  return from_coprime(without(t, h, budget), b_g.multiply(without(o.denominator_, h, budget), budget));
 }
 
 RationalFunction RationalFunction::multiply(const RationalFunction& o, const Budget& budget) const {
   if (numerator_.is_zero() || o.numerator_.is_zero()) return RationalFunction(Polynomial(numerator_.ring()));
   // (a/b)·(c/d) = ((a/g1)·(c/g2)) / ((b/g2)·(d/g1)) with g1 = gcd(a, d), g2 = gcd(c, b):
   // in lowest terms already, since a/b and c/d are.
-  const Polynomial g1 = gcd(numerator_, o.denominator_);
-  const Polynomial g2 = gcd(o.numerator_, denominator_);
+  const Polynomial g1 = gcd(numerator_, o.denominator_, budget);
+  const Polynomial g2 = gcd(o.numerator_, denominator_, budget);
   // Numerator first: a limit then names the same product on every compiler.
-  Polynomial n = without(numerator_, g1).multiply(without(o.numerator_, g2), budget);
-  Polynomial d = without(denominator_, g2).multiply(without(o.denominator_, g1), budget);
+  Polynomial n = without(numerator_, g1, budget).multiply(without(o.numerator_, g2, budget), budget);
+  Polynomial d = without(denominator_, g2, budget).multiply(without(o.denominator_, g1, budget), budget);
   return from_coprime(std::move(n), std::move(d));
 }
 
