@@ -70,7 +70,11 @@ std::vector<Polynomial> common_denominator_form(const Parametrization& p, const 
     for (std::size_t j = 0; j < q.size(); ++j) {
       if (j != i) rest.push_back(divide_exact(q[j], gcd(q[j], q[i], phased), phased));
     }
-    forms.push_back(p.coordinates[i].numerator().multiply(lcm_of_members(rest, p.parameter_ring, phased), phased));
+    const Polynomial cofactor = lcm_of_members(rest, p.parameter_ring, phased);
+    const Polynomial& numerator = p.coordinates[i].numerator();
+    // A polynomial parametrization (ω = 1) passes through unchanged, without a product.
+    forms.push_back(cofactor.is_constant() ? numerator.scaled(cofactor.coefficient(0))
+                                           : numerator.multiply(cofactor, phased));
   }
   return forms;
 }
