@@ -70,7 +70,7 @@ std::optional<std::size_t> exact_product_terms(const Polynomial& a, const Polyno
   const std::size_t na = a.num_terms(), nb = b.num_terms();
   if (na == 1 || nb == 1) return na * nb;
   if (share_a_variable(a, b)) return std::nullopt;
-  // na·nb cannot overflow: each factor fits in memory, and so does its square root.
+  // Saturating: a count past size_t is refused by any term limit all the same.
   return na > std::numeric_limits<std::size_t>::max() / nb ? std::numeric_limits<std::size_t>::max() : na * nb;
 }
 
