@@ -204,10 +204,11 @@ TEST(Budget, PredictedTermsAreRefusedBeforeTheResult) {
   };
   EXPECT_NO_THROW(budget.check_predicted_terms(100, "polynomial multiplication", describe));
   EXPECT_EQ(described, 0);
-  const std::string message = limit_message(
-      [&] { budget.check_predicted_terms(400, "polynomial multiplication", describe); }, Limit::size);
-  EXPECT_TRUE(contains(message, "the product of 20 and 20 terms would have 400 terms (limit 100); refused before it "
-                                "was built"))
+  const std::string message =
+      limit_message([&] { budget.check_predicted_terms(400, "polynomial multiplication", describe); }, Limit::size);
+  EXPECT_TRUE(contains(message,
+                       "the product of 20 and 20 terms would have 400 terms (limit 100); refused before it "
+                       "was built"))
       << message;
   EXPECT_NO_THROW(Budget().check_predicted_terms(1'000'000'000, "anything", describe));
 }

@@ -200,7 +200,8 @@ TEST(TrigonometricLimits, PowersAreRefusedInTheCommonDenominatorBeforeItIsBuilt)
   budget.set_max_terms(200'000).set_max_memory(std::size_t{4} << 30);  // the account measures
   ImplicitizeParams params;
   params.budget = budget;
-  const LimitExceeded e = limit_of(budget, [&] { implicitize(parse_parametrization(texts(kPowers), {}, budget), params); });
+  const LimitExceeded e =
+      limit_of(budget, [&] { implicitize(parse_parametrization(texts(kPowers), {}, budget), params); });
   EXPECT_EQ(e.limit(), Limit::size);
   EXPECT_TRUE(contains(e.what(), "in the common denominator of the parametrization")) << e.what();
   EXPECT_TRUE(contains(e.what(), "would have 1002001 terms (limit 200000)")) << e.what();
@@ -258,7 +259,8 @@ TEST(TrigonometricLimits, TimeLimitStopsEveryPhase) {
   Budget budget = Budget::with_timeout(1);
   ImplicitizeParams params;
   params.budget = budget;
-  const LimitExceeded e = limit_of(budget, [&] { implicitize(parse_parametrization(texts(kPowers), {}, budget), params); });
+  const LimitExceeded e =
+      limit_of(budget, [&] { implicitize(parse_parametrization(texts(kPowers), {}, budget), params); });
   EXPECT_EQ(e.limit(), Limit::time) << e.what();
 
   const Parametrization p = parse_parametrization(texts(kPowers));

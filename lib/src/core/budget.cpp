@@ -136,8 +136,8 @@ void Budget::check_terms(std::size_t terms, const char* where) const {
 
 void Budget::throw_predicted_terms(std::size_t terms, const char* where, const std::string& what) const {
   std::ostringstream msg;
-  msg << "size limit exceeded during " << located(where) << ": " << what << " would have " << terms
-      << " terms (limit " << max_terms_ << "); refused before it was built";
+  msg << "size limit exceeded during " << located(where) << ": " << what << " would have " << terms << " terms (limit "
+      << max_terms_ << "); refused before it was built";
   throw LimitExceeded(Limit::size, msg.str());
 }
 
@@ -152,8 +152,7 @@ void Budget::refuse_past_deadline(double predicted_seconds, const char* where, c
   std::ostringstream msg;
   msg.precision(2);
   msg << "time limit of " << timeout_seconds_ << " s exceeded during " << located(where) << ": " << what
-      << " would take about "
-      << predicted_seconds << " s and " << std::max(0.0, left) << " s are left";
+      << " would take about " << predicted_seconds << " s and " << std::max(0.0, left) << " s are left";
   throw LimitExceeded(Limit::time, msg.str());
 }
 

@@ -150,7 +150,7 @@ class Budget {
   std::size_t max_variables_ = 0;
   std::size_t max_polynomials_ = 0;
   std::uint64_t max_work_ = 0;
-  const char* phase_ = nullptr;  // a string literal, or null
+  const char* phase_ = nullptr;                       // a string literal, or null
   std::shared_ptr<std::atomic<std::uint64_t>> work_;  // null without an allowance
   std::shared_ptr<MemoryAccount> memory_;             // null without a memory limit
   // What every copy shares from construction on, in one allocation: whoever holds any
