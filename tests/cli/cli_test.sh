@@ -672,6 +672,17 @@ expect_within "shape auto of degree 1000 within its timeout" 16 5 "time_limit_ex
   render --implicit "x^1000+y^999+z^998-1" --size 16x16 --timeout 2 -o "$WORK/d.png"
 expect_within "patch bounds of degree 1000 within the timeout" 16 5 "time_limit_exceeded" \
   render --x "s^1000+t" --y "t^1000+s" --z "s*t" --size 16x16 --timeout 2 -o "$WORK/d.png"
+# Issue 41: sin(u)^1000 ran 44 s at 4.3 GB on --timeout 1 (the common denominator of
+# a million terms was built, then divided, before any check). Stopped by the limit, not
+# by completing; with a term limit the phase and the predicted size are named.
+expect_within "sin(u)^1000 within its timeout" 12 5 "time_limit_exceeded" \
+  implicitize --x "sin(u)^1000" --y "cos(v)^1000" --z "sin(u+v)" --timeout 1
+expect_status "sin(u)^1000 refused before its common denominator" 5 \
+  "size_limit_exceeded.*in the common denominator of the parametrization.*would have 1002001 terms" \
+  implicitize --x "sin(u)^1000" --y "cos(v)^1000" --z "sin(u+v)" --max-terms 200000
+expect_status "cos(999u)*cos(1000v) within its memory limit" 5 \
+  "memory_limit_exceeded.*in the trigonometric substitution" \
+  implicitize --x "cos(999*u)*cos(1000*v)" --y "sin(999*u)" --z "sin(1000*v)" --max-memory 128M
 # --max-memory: a product of 10 million terms, no term limit, stopped by the memory limit.
 expect_json "memory limit" 5 "j['error']['code'] == 'memory_limit_exceeded' and j['error']['limit'] == 'memory'
 and '64 MiB' in j['error']['message']" groebner --max-memory 64M --json "(a+b+c+d+e+f+g+h)^30"

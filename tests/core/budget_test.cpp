@@ -176,6 +176,43 @@ TEST(Budget, CountCapsNameTheirLimit) {
   EXPECT_TRUE(contains(message, "the ideal has 30000 polynomials; the limit is 1000")) << message;
 }
 
+// A step shared by many phases (a product) says which phase it served; the copy
+// shares the deadline, the limits and the cancellation with the original.
+TEST(Budget, PhaseIsNamedInEveryMessage) {
+  Budget budget;
+  budget.set_max_terms(10);
+  const Budget phased = budget.in_phase("the common denominator");
+  EXPECT_EQ(budget.phase(), nullptr);
+  EXPECT_STREQ(phased.phase(), "the common denominator");
+  std::string message = limit_message([&] { phased.check_terms(11, "polynomial multiplication"); }, Limit::size);
+  EXPECT_TRUE(contains(message, "during polynomial multiplication in the common denominator: a polynomial reached 11"))
+      << message;
+  budget.cancel();
+  message = limit_message([&] { phased.check("polynomial multiplication"); }, Limit::cancelled);
+  EXPECT_TRUE(contains(message, "polynomial multiplication in the common denominator")) << message;
+}
+
+// A size known in advance is refused before the result exists; the description is
+// built only then.
+TEST(Budget, PredictedTermsAreRefusedBeforeTheResult) {
+  Budget budget;
+  budget.set_max_terms(100);
+  int described = 0;
+  auto describe = [&] {
+    ++described;
+    return std::string("the product of 20 and 20 terms");
+  };
+  EXPECT_NO_THROW(budget.check_predicted_terms(100, "polynomial multiplication", describe));
+  EXPECT_EQ(described, 0);
+  const std::string message =
+      limit_message([&] { budget.check_predicted_terms(400, "polynomial multiplication", describe); }, Limit::size);
+  EXPECT_TRUE(contains(message,
+                       "the product of 20 and 20 terms would have 400 terms (limit 100); refused before it "
+                       "was built"))
+      << message;
+  EXPECT_NO_THROW(Budget().check_predicted_terms(1'000'000'000, "anything", describe));
+}
+
 TEST(Budget, MemoryLimitFiresAtTheNextCheck) {
   if (!memory_accounting_enabled()) GTEST_SKIP() << "a sanitizer build counts no allocations";
   Budget budget;

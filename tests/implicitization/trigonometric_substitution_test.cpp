@@ -163,5 +163,112 @@ TEST(TrigonometricSubstitution, DomainsInAnglesMapThroughTheSubstitution) {
   }
 }
 
+// ---- issue 41: every phase of the conversion within its limits --------------------
+//
+// The reproducers ran 25–48 s past 1–2 s limits and held 2–5 GB: products and common
+// denominators were built whole before any limit was read. These tests assert what
+// does not depend on the machine's speed: which limit stopped the computation, the
+// phase it names, the size it predicted, and the memory the budget's account held.
+
+constexpr const char* kPowers[] = {"sin(u)^1000", "cos(v)^1000", "sin(u+v)"};
+constexpr const char* kMultiples[] = {"cos(999*u)*cos(1000*v)", "sin(999*u)", "sin(1000*v)"};
+constexpr std::size_t kMiB = std::size_t{1} << 20;
+
+std::vector<std::string> texts(const char* const (&coordinates)[3]) {
+  return {coordinates[0], coordinates[1], coordinates[2]};
+}
+
+// Runs `compute` charging `budget`'s account (as a server worker and the command line
+// do) and returns the LimitExceeded it must throw.
+template <typename Compute>
+LimitExceeded limit_of(const Budget& budget, Compute compute) {
+  try {
+    compute_charging(budget, compute);
+  } catch (const LimitExceeded& e) {
+    return e;
+  }
+  ADD_FAILURE() << "the computation completed";
+  return LimitExceeded(Limit::cancelled, "");
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// The server's term limit (200 000): the lcm of (1 + t²)^1000 and (1 + s²)^1000 has
+// exactly 1001·1001 terms, known before it is multiplied.
+TEST(TrigonometricLimits, PowersAreRefusedInTheCommonDenominatorBeforeItIsBuilt) {
+  Budget budget;
+  budget.set_max_terms(200'000).set_max_memory(std::size_t{4} << 30);  // the account measures
+  ImplicitizeParams params;
+  params.budget = budget;
+  const LimitExceeded e =
+      limit_of(budget, [&] { implicitize(parse_parametrization(texts(kPowers), {}, budget), params); });
+  EXPECT_EQ(e.limit(), Limit::size);
+  EXPECT_TRUE(contains(e.what(), "in the common denominator of the parametrization")) << e.what();
+  EXPECT_TRUE(contains(e.what(), "would have 1002001 terms (limit 200000)")) << e.what();
+  // The product's coefficients alone (about 1200 bits each) would hold more than 150 MiB.
+  if (memory_accounting_enabled()) {
+    EXPECT_LT(budget.memory_account()->peak_bytes(), 32 * kMiB);
+  }
+}
+
+// The numerators of cos(999u) and cos(1000v) have 1000 and 1001 terms: their product
+// is refused in the substitution itself, before the product or any gcd of it.
+TEST(TrigonometricLimits, MultiplesAreRefusedInTheSubstitutionBeforeTheProduct) {
+  Budget budget;
+  budget.set_max_terms(200'000).set_max_memory(std::size_t{4} << 30);
+  const LimitExceeded e = limit_of(budget, [&] { parse_parametrization(texts(kMultiples), {}, budget); });
+  EXPECT_EQ(e.limit(), Limit::size);
+  EXPECT_TRUE(contains(e.what(), "in the trigonometric substitution")) << e.what();
+  EXPECT_TRUE(contains(e.what(), "the product of 1000 and 1001 terms in disjoint variables would have 1001000 terms"))
+      << e.what();
+  if (memory_accounting_enabled()) {
+    EXPECT_LT(budget.memory_account()->peak_bytes(), 32 * kMiB);
+  }
+}
+
+// No term limit, a memory limit: the products are stopped while they grow, within a
+// tenth of the limit (the 512 MiB server "held 634 MiB" before).
+TEST(TrigonometricLimits, MemoryLimitHoldsWhileTheProductsGrow) {
+  if (!memory_accounting_enabled()) GTEST_SKIP() << "a sanitizer build counts no allocations";
+  const std::size_t limit = 64 * kMiB;
+  {
+    Budget budget;
+    budget.set_max_memory(limit);
+    ImplicitizeParams params;
+    params.budget = budget;
+    const LimitExceeded e =
+        limit_of(budget, [&] { implicitize(parse_parametrization(texts(kPowers), {}, budget), params); });
+    EXPECT_EQ(e.limit(), Limit::memory) << e.what();
+    EXPECT_TRUE(contains(e.what(), "in the common denominator of the parametrization")) << e.what();
+    EXPECT_LE(budget.memory_account()->peak_bytes(), limit + limit / 10);
+  }
+  {
+    Budget budget;
+    budget.set_max_memory(limit);
+    const LimitExceeded e = limit_of(budget, [&] { parse_parametrization(texts(kMultiples), {}, budget); });
+    EXPECT_EQ(e.limit(), Limit::memory) << e.what();
+    EXPECT_TRUE(contains(e.what(), "in the trigonometric substitution")) << e.what();
+    EXPECT_LE(budget.memory_account()->peak_bytes(), limit + limit / 10);
+  }
+}
+
+// A time limit alone stops the computation by the limit, not by completing (no
+// machine computes these in a second), and every phase reads the clock: with the
+// deadline already past, the common denominator stops at its first check.
+TEST(TrigonometricLimits, TimeLimitStopsEveryPhase) {
+  Budget budget = Budget::with_timeout(1);
+  ImplicitizeParams params;
+  params.budget = budget;
+  const LimitExceeded e =
+      limit_of(budget, [&] { implicitize(parse_parametrization(texts(kPowers), {}, budget), params); });
+  EXPECT_EQ(e.limit(), Limit::time) << e.what();
+
+  const Parametrization p = parse_parametrization(texts(kPowers));
+  const Budget past = Budget::with_timeout(1e-9);
+  const LimitExceeded late = limit_of(past, [&] { common_denominator_form(p, past); });
+  EXPECT_EQ(late.limit(), Limit::time);
+  EXPECT_TRUE(contains(late.what(), "in the common denominator of the parametrization")) << late.what();
+}
+
 }  // namespace
 }  // namespace implicitizer

@@ -11,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include "implicitizer/core/memory_account.hpp"
 #include "implicitizer/polynomial/parser.hpp"
 #include "implicitizer/polynomial/printer.hpp"
 #include "polynomial/test_support.hpp"
@@ -164,6 +165,79 @@ TEST_F(PolynomialTest, MultiplicationRespectsTheTermBudget) {
   }
   budget.set_max_terms(12);
   EXPECT_EQ(a.multiply(b, budget).num_terms(), 12u);
+}
+
+// Issue 41: products of polynomials in separate parameters (the denominators of
+// sin(u)^1000 and cos(v)^1000) were built to 16 million terms before the limit was
+// read. Their size is known before multiplying, and the refusal comes first: the
+// memory the computation held stays far below the product's.
+TEST_F(PolynomialTest, ProductInDisjointVariablesIsRefusedBeforeItIsBuilt) {
+  const Polynomial a = parse("(1+x^2)^300");  // 301 terms
+  const Polynomial b = parse("(1+y^2)^300");
+  Budget budget;
+  budget.set_max_terms(20'000).set_max_memory(std::size_t{1} << 30);  // the account only measures
+  const MemoryScope scope(budget.memory_account());
+  const std::size_t before = budget.memory_account()->bytes();
+  try {
+    a.multiply(b, budget);
+    FAIL();
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit(), Limit::size);
+    const std::string message = e.what();
+    EXPECT_NE(message.find("the product of 301 and 301 terms in disjoint variables would have 90601 terms (limit "
+                           "20000); refused before it was built"),
+              std::string::npos)
+        << message;
+  }
+  // 90 601 coefficients of about 540 bits would hold more than 6 MiB; the refusal holds
+  // none of them.
+  if (memory_accounting_enabled()) {
+    EXPECT_LT(budget.memory_account()->peak_bytes() - before, std::size_t{1} << 20);
+  }
+}
+
+// A product in shared variables can collapse far below na·nb, so no bound refuses it:
+// (1+x)^300·(1−x)^300 = (1−x²)^300 has 301 terms though 301·301 pass the limit.
+TEST_F(PolynomialTest, CollapsingProductIsNotRefusedByABound) {
+  Budget budget;
+  budget.set_max_terms(1000);
+  const Polynomial p = parse("(1+x)^300").multiply(parse("(1-x)^300"), budget);
+  EXPECT_EQ(p, parse("(1-x^2)^300"));
+}
+
+// A product in shared variables that does grow past the limit is refused while it
+// grows, within one check interval of the limit, naming the limit it passed.
+TEST_F(PolynomialTest, GrowingProductIsRefusedWhileItGrows) {
+  Budget budget;
+  budget.set_max_terms(2000);
+  try {
+    parse("(1+x+y)^60").multiply(parse("(1+x-z)^60"), budget);
+    FAIL();
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit(), Limit::size);
+    EXPECT_NE(std::string(e.what()).find("a polynomial reached"), std::string::npos) << e.what();
+  }
+}
+
+// A power whose terms are affinely independent monomials has exactly the binomial
+// count of terms, C(m − 1 + e, e): refused before the first multiplication.
+TEST_F(PolynomialTest, PowerIsRefusedByItsBinomialCount) {
+  Budget budget;
+  budget.set_max_terms(1000);
+  try {
+    parse("x+y+z").pow(60, budget);  // C(62, 2) = 1891 terms
+    FAIL();
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit(), Limit::size);
+    EXPECT_NE(std::string(e.what()).find("the power 60 of 3 terms would have 1891 terms"), std::string::npos)
+        << e.what();
+  }
+  budget.set_max_terms(1891);
+  EXPECT_EQ(parse("x+y+z").pow(60, budget).num_terms(), 1891u);
+  // 1 + x + x² is not affinely independent (its powers have 2e + 1 terms, not the
+  // binomial count): no prediction, and the power goes through.
+  budget.set_max_terms(200);
+  EXPECT_EQ(parse("1+x+x^2").pow(60, budget).num_terms(), 121u);
 }
 
 TEST_F(PolynomialTest, PowerStopsOnTime) {

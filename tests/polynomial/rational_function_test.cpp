@@ -122,6 +122,11 @@ TEST(RationalFunctionProperties, FieldIdentities) {
       EXPECT_TRUE(is_normal(a / b));
     }
     EXPECT_TRUE(same(a.pow(2), a * a));
+    // Henrici's sum and the crosswise product take gcds of the operands only; they
+    // agree with the gcd of the whole result.
+    const Polynomial &an = a.numerator(), &ad = a.denominator(), &bn = b.numerator(), &bd = b.denominator();
+    EXPECT_TRUE(same(a + b, RationalFunction(an * bd + bn * ad, ad * bd)));
+    EXPECT_TRUE(same(a * b, RationalFunction(an * bn, ad * bd)));
     const std::vector<Rational> point = random.point(2);
     const Rational da = a.denominator().evaluate(point), db = b.denominator().evaluate(point);
     if (da != 0 && db != 0) {

@@ -141,6 +141,80 @@ def test_same_status_every_time(s):
     check(len(answers) == 1, "one input, one status: %r" % answers)
 
 
+# ---- trigonometric input (issue 41) --------------------------------------------
+
+POWERS = {"x": "sin(u)^1000", "y": "cos(v)^1000", "z": "sin(u+v)"}
+MULTIPLES = {"x": "cos(999*u)*cos(1000*v)", "y": "sin(999*u)", "z": "sin(1000*v)"}
+COMMON_DENOMINATOR = "in the common denominator of the parametrization"
+SUBSTITUTION = "in the trigonometric substitution"
+
+
+def job_error(s, kind, request):
+    """Submits a job and waits for it to end: (http_status, error, seconds)."""
+    start = time.monotonic()
+    status, _, body = s.post_json("/v1/jobs", {"kind": kind, "request": request})
+    check(status == 202, "job submitted: %s %r" % (status, body))
+    deadline = start + 120
+    state = {}
+    while time.monotonic() < deadline:
+        _, _, data = s.request("GET", "/v1/jobs/" + body.get("id", "?"))
+        state = json.loads(data)
+        if state.get("status") in ("done", "failed", "cancelled"):
+            break
+        time.sleep(0.05)
+    seconds = time.monotonic() - start
+    print("  job %-12s %s %-22s %6.2f s  server peak RSS %d MiB" % (kind, state.get("http_status"),
+          error(state.get("result")).get("code", ""), seconds, rss_kib(s, "VmHWM") // 1024))
+    return state.get("http_status"), error(state.get("result")), seconds
+
+
+def check_refusal(name, status, err, seconds, limit_s, phase, said=""):
+    """A 413 size_limit_exceeded naming `phase` (and `said`), within the limit + 1 s
+    (and the load allowance)."""
+    message = err.get("message", "")
+    check(status == 413 and err.get("code") == "size_limit_exceeded" and phase in message and said in message,
+          "%s: %s %r" % (name, status, err))
+    check(seconds < limit_s + 1 + LOAD_ALLOWANCE_S, "%s answered in %.1f s" % (name, seconds))
+
+
+def test_trigonometric_within_limits(s):
+    # sin(u)^1000: 504 after 48.5 s at 4.2 GB on a 2 s budget. The lcm of the
+    # denominators, (1+t^2)^1000 (1+s^2)^1000, has 1001*1001 terms: refused before it
+    # is built, by the server's 200 000-term limit.
+    status, body, seconds = timed_post(s, "/v1/implicitize", dict(POWERS, timeout_ms=2000))
+    check_refusal("sin(u)^1000", status, error(body), seconds, 2, COMMON_DENOMINATOR,
+                  "would have 1002001 terms (limit 200000); refused before it was built")
+    # As a job with 1 s: 30 s and 5.2 GB.
+    check_refusal("sin(u)^1000 as a job", *job_error(s, "implicitize", dict(POWERS, timeout_ms=1000)), 1,
+                  COMMON_DENOMINATOR)
+    # /v1/sdf of it on [0,1]^2 with 1 s: 413 after 24.8 s, 2.3 GB.
+    status, body, seconds = timed_post(s, "/v1/sdf", dict(POWERS, domain=[0, 1, 0, 1], timeout_ms=1000))
+    check_refusal("sdf of sin(u)^1000", status, error(body), seconds, 1, COMMON_DENOMINATOR)
+    # cos(999u)*cos(1000v) with 10 s: 504 after 14.6 s, 4.0 GB. The product of the
+    # numerators (1000 by 1001 terms) is refused in the substitution.
+    status, body, seconds = timed_post(s, "/v1/implicitize", dict(MULTIPLES, timeout_ms=10000))
+    check_refusal("cos(999u)*cos(1000v)", status, error(body), seconds, 10, SUBSTITUTION,
+                  "the product of 1000 and 1001 terms in disjoint variables would have 1001000 terms")
+    peak = rss_kib(s, "VmHWM")
+    check(peak < 512 * 1024, "peak RSS after the trigonometric requests: %d MiB" % (peak // 1024))
+
+
+def test_trigonometric_memory_limit():
+    # Without a term limit, --max-memory-mb 512 stops the growing product: it "held
+    # 634 MiB" before. The time limit is far so that only memory can stop it.
+    s = Server(BIN, "--max-memory-mb", "512", "--max-terms", "0", "--default-timeout-ms", "600000",
+               "--max-timeout-ms", "600000", "--cache-size", "0", "--quiet")
+    try:
+        status, body, _ = timed_post(s, "/v1/implicitize", MULTIPLES, timeout=600)
+        message = error(body).get("message", "")
+        check(status == 413 and error(body).get("code") == "memory_limit_exceeded" and SUBSTITUTION in message,
+              "cos(999u)*cos(1000v) under 512 MiB: %s %r" % (status, error(body)))
+        peak = rss_kib(s, "VmHWM")
+        check(peak < 512 * 1024 * 11 // 10, "peak RSS under a 512 MiB limit: %d MiB" % (peak // 1024))
+    finally:
+        s.close()
+
+
 # ---- memory -------------------------------------------------------------------
 
 def test_memory_limit():
@@ -207,7 +281,8 @@ def main():
     s = Server(BIN, "--threads", "2", "--cache-size", "0", "--quiet")
     try:
         for test in (test_counts_refused_up_front, test_interpolation_within_budget,
-                     test_groebner_error_names_the_requests_limit, test_same_status_every_time):
+                     test_groebner_error_names_the_requests_limit, test_same_status_every_time,
+                     test_trigonometric_within_limits):
             print(test.__name__)
             try:
                 test(s)
@@ -215,7 +290,8 @@ def main():
                 failures.append("%s raised:\n%s" % (test.__name__, traceback.format_exc()))
     finally:
         s.close()
-    for test in (test_many_generators_within_budget, test_memory_limit, test_pool_not_blocked):
+    for test in (test_many_generators_within_budget, test_memory_limit, test_trigonometric_memory_limit,
+                 test_pool_not_blocked):
         print(test.__name__)
         try:
             test()

@@ -283,7 +283,7 @@ PatchApproximation approximate_patch(const Parametrization& parametrization, con
   if (!(diagonal > 0)) {
     throw InputError("method_not_applicable", "the patch is a single point: nothing to approximate").in_field("domain");
   }
-  std::vector<Polynomial> forms = common_denominator_form(parametrization);
+  std::vector<Polynomial> forms = common_denominator_form(parametrization, budget);
   const PatchEvaluator patch(forms);
   const Context ctx{parametrization,
                     params,

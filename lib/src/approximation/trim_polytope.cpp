@@ -79,7 +79,7 @@ RationalFunction linear_form(const std::vector<Polynomial>& forms, const Point& 
 
 std::optional<TrimPolytope> bound_piece_polytope(const Parametrization& parametrization, const ParameterDomain& piece,
                                                  const Budget& budget) {
-  const std::vector<Polynomial> forms = common_denominator_form(parametrization);
+  const std::vector<Polynomial> forms = common_denominator_form(parametrization, budget);
   const approximation::PatchEvaluator patch(forms);
   const std::optional<std::vector<Point>> directions = plane_directions(patch, piece);
   if (!directions) return std::nullopt;

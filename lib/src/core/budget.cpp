@@ -52,7 +52,7 @@ void Budget::charge_work(std::uint64_t units, const char* where) const {
   const std::uint64_t done = work_->fetch_add(units, std::memory_order_relaxed) + units;
   if (done > max_work_) {
     std::ostringstream msg;
-    msg << "work allowance of " << max_work_ << " units spent during " << where;
+    msg << "work allowance of " << max_work_ << " units spent during " << located(where);
     throw LimitExceeded(Limit::work, msg.str());
   }
 }
@@ -77,7 +77,7 @@ namespace {
 
 constexpr double kMiB = 1024.0 * 1024.0;
 
-[[noreturn]] void throw_memory_limit(const MemoryAccount& account, const char* where) {
+[[noreturn]] void throw_memory_limit(const MemoryAccount& account, const std::string& where) {
   std::ostringstream msg;
   msg.precision(3);
   msg << "memory limit of " << static_cast<double>(account.limit_bytes()) / kMiB << " MiB exceeded during " << where
@@ -87,8 +87,18 @@ constexpr double kMiB = 1024.0 * 1024.0;
 
 }  // namespace
 
+std::string Budget::located(const char* where) const {
+  return phase_ ? std::string(where) + " in " + phase_ : std::string(where);
+}
+
+Budget Budget::in_phase(const char* phase) const {
+  Budget copy = *this;
+  copy.phase_ = phase;
+  return copy;
+}
+
 void Budget::rethrow_bad_alloc(const char* where) const {
-  if (memory_ && memory_->exceeded()) throw_memory_limit(*memory_, where);
+  if (memory_ && memory_->exceeded()) throw_memory_limit(*memory_, located(where));
   throw;
 }
 
@@ -104,12 +114,12 @@ void Budget::check_polynomials(std::size_t count, const char* what) const {
 
 void Budget::check(const char* where) const {
   if (is_cancelled()) {
-    throw LimitExceeded(Limit::cancelled, std::string("computation cancelled during ") + where);
+    throw LimitExceeded(Limit::cancelled, "computation cancelled during " + located(where));
   }
-  if (memory_ && memory_->exceeded()) throw_memory_limit(*memory_, where);
+  if (memory_ && memory_->exceeded()) throw_memory_limit(*memory_, located(where));
   if (has_deadline_ && Clock::now() > deadline_) {
     std::ostringstream msg;
-    msg << "time limit of " << timeout_seconds_ << " s exceeded during " << where;
+    msg << "time limit of " << timeout_seconds_ << " s exceeded during " << located(where);
     throw LimitExceeded(Limit::time, msg.str());
   }
 }
@@ -117,11 +127,18 @@ void Budget::check(const char* where) const {
 void Budget::check_terms(std::size_t terms, const char* where) const {
   if (max_terms_ != 0 && terms > max_terms_) {
     std::ostringstream msg;
-    msg << "size limit exceeded during " << where << ": a polynomial reached " << terms << " terms (limit "
+    msg << "size limit exceeded during " << located(where) << ": a polynomial reached " << terms << " terms (limit "
         << max_terms_ << ")";
     throw LimitExceeded(Limit::size, msg.str());
   }
   check(where);
+}
+
+void Budget::throw_predicted_terms(std::size_t terms, const char* where, const std::string& what) const {
+  std::ostringstream msg;
+  msg << "size limit exceeded during " << located(where) << ": " << what << " would have " << terms << " terms (limit "
+      << max_terms_ << "); refused before it was built";
+  throw LimitExceeded(Limit::size, msg.str());
 }
 
 double Budget::seconds_left() const {
@@ -134,8 +151,8 @@ void Budget::refuse_past_deadline(double predicted_seconds, const char* where, c
   if (predicted_seconds <= left) return;
   std::ostringstream msg;
   msg.precision(2);
-  msg << "time limit of " << timeout_seconds_ << " s exceeded during " << where << ": " << what << " would take about "
-      << predicted_seconds << " s and " << std::max(0.0, left) << " s are left";
+  msg << "time limit of " << timeout_seconds_ << " s exceeded during " << located(where) << ": " << what
+      << " would take about " << predicted_seconds << " s and " << std::max(0.0, left) << " s are left";
   throw LimitExceeded(Limit::time, msg.str());
 }
 

@@ -94,7 +94,7 @@ bool is_surface_in_two_parameters(const AutoState& s) { return s.coordinates == 
 /// The probe (rules 3–5), made the first time a rule asks.
 const AuxiliaryResultantPlan& resultant_plan(AutoState& s) {
   if (!s.plan) {
-    const std::vector<Polynomial> f = common_denominator_form(s.p);
+    const std::vector<Polynomial> f = common_denominator_form(s.p, s.params.budget);
     s.plan = plan_auxiliary_resultant({f[0], f[1], f[2], f[3]}, resultant_params(s.params.budget, 1));
     s.probe = s.plan->stats;
   }
@@ -106,7 +106,7 @@ bool is_triangular_patch(AutoState& s) {
 }
 
 bool interpolation_before_macaulay(const AutoState& s) {
-  return implicit_degree_bound(s.p) <= kInterpolationOverMacaulay;
+  return implicit_degree_bound(s.p, s.params.budget) <= kInterpolationOverMacaulay;
 }
 
 std::string why_no_resultant(const AutoState& s) {
@@ -147,7 +147,7 @@ Answer sparse_support_by_interpolation(AutoState& s) {
   if (!is_surface_in_two_parameters(s)) return std::nullopt;
   const std::optional<ImplicitSupport> support = predict_implicit_support(s.p, s.params.budget);
   if (!support || support->largest_class > InterpolationParams{}.max_columns) return std::nullopt;
-  const double dense = space_monomial_count(implicit_degree_bound(s.p));
+  const double dense = space_monomial_count(implicit_degree_bound(s.p, s.params.budget));
   if (support->cubed_columns > std::min(kSparseMaxCubedColumns, kSparseShareOfDense * dense * dense * dense)) {
     return std::nullopt;
   }

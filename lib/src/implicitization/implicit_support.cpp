@@ -166,7 +166,7 @@ std::optional<ImplicitSupport> predict_implicit_support(const Parametrization& p
   if (parametrization.coordinates.size() != 3 || parametrization.parameter_ring->num_variables() != 2) {
     return std::nullopt;
   }
-  const std::vector<Polynomial> forms = common_denominator_form(parametrization);
+  const std::vector<Polynomial> forms = common_denominator_form(parametrization, budget);
   std::vector<std::vector<Point>> supports;
   std::vector<Point> differences;
   for (const Polynomial& f : forms) {

@@ -50,7 +50,7 @@ constexpr double kTimedColumns = 200;
 class InterpolationDriver {
  public:
   InterpolationDriver(const Parametrization& p, const InterpolationParams& options)
-      : parametrization_(p), options_(options), forms_(map_forms(p)), primes_(options.primes) {}
+      : parametrization_(p), options_(options), forms_(map_forms(p, options.budget)), primes_(options.primes) {}
 
   // The equation, or nullopt when its degree is proven above `max_degree` (only
   // when that is below the degree bound: at the bound there is no such answer).
@@ -274,9 +274,9 @@ class InterpolationDriver {
 
 }  // namespace
 
-std::int32_t implicit_degree_bound(const Parametrization& parametrization) {
+std::int32_t implicit_degree_bound(const Parametrization& parametrization, const Budget& budget) {
   return static_cast<std::int32_t>(
-      std::min<std::int64_t>(degree_bound_of(map_forms(parametrization)), kMaxTotalDegree));
+      std::min<std::int64_t>(degree_bound_of(map_forms(parametrization, budget)), kMaxTotalDegree));
 }
 
 InterpolationResult implicitize_by_interpolation(const Parametrization& parametrization,
@@ -321,7 +321,7 @@ bool has_hypersurface_rank(const MapForms& forms, const InterpolationParams& opt
 ImplicitEquationCheck check_implicit_equation(const Polynomial& candidate, const Parametrization& parametrization,
                                               const InterpolationParams& options) {
   ImplicitEquationCheck check;
-  const MapForms forms = map_forms(parametrization);
+  const MapForms forms = map_forms(parametrization, options.budget);
   const std::size_t n = forms.coordinates;
   if (candidate.ring()->num_variables() != n) {
     throw std::invalid_argument("check_implicit_equation: one variable per coordinate expected");

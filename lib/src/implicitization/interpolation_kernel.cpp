@@ -116,11 +116,11 @@ bool jacobian_minors_vanish(const MapForms& m, std::size_t rank, const Budget& b
 
 }  // namespace
 
-MapForms map_forms(const Parametrization& p) {
+MapForms map_forms(const Parametrization& p, const Budget& budget) {
   MapForms m;
   m.parameters = p.parameter_ring->num_variables();
   m.coordinates = p.coordinates.size();
-  m.exact = common_denominator_form(p);
+  m.exact = common_denominator_form(p, budget);
   scale_to_integers(m.exact);
   for (const Polynomial& f : m.exact) {
     m.forms.push_back(integer_polynomial(f));

@@ -44,8 +44,9 @@ struct MapForms {
   std::vector<std::vector<IntegerPolynomial>> partials;  // partials[i][j] = ∂(form i)/∂(parameter j)
 };
 
-/// The forms of `p` (common_denominator_form), scaled to integers, with their partials.
-MapForms map_forms(const Parametrization& p);
+/// The forms of `p` (common_denominator_form, checked against `budget`), scaled to
+/// integers, with their partials.
+MapForms map_forms(const Parametrization& p, const Budget& budget);
 
 /// Powers a_j^e of the coordinates of a point, e ≤ top[j].
 class PowerTable {

@@ -23,13 +23,59 @@ const Expression* find_identifier(const Expression& e, const std::string& name) 
   return nullptr;
 }
 
+constexpr const char* kCommonDenominator = "the common denominator of the parametrization";
+
+// lcm(members), positive and primitive, with gcds taken only of members and their
+// divisors, never of the growing lcm: FLINT's gcd and division cannot be interrupted,
+// and the lcm of (1 + t²)^1000 and (1 + s²)^1000 has a million terms. Adding q to
+// w = lcm(seen) multiplies w by q / gcd(w, q), and gcd(w, q) = lcm of the gcd(p, q),
+// p in seen (gcd and lcm distribute over each other in a UFD): divisors of q. The
+// recursion is on fewer members each time (2^members calls: a parametrization has
+// at most three coordinates).
+Polynomial lcm_of_members(const std::vector<Polynomial>& members, const RingPtr& ring, const Budget& budget) {
+  Polynomial w = Polynomial::constant(ring, Rational(1));
+  std::vector<Polynomial> seen;
+  for (const Polynomial& q : members) {
+    if (q.is_constant()) continue;
+    std::vector<Polynomial> common;
+    for (const Polynomial& p : seen) common.push_back(gcd(p, q, budget));
+    const Polynomial g = lcm_of_members(common, ring, budget);
+    if (!g.is_constant() && g.num_terms() == q.num_terms() && g == q.primitive_part()) continue;  // q | w
+    w = w.multiply(g.is_constant() ? q : divide_exact(q, g, budget), budget).primitive_part();
+    seen.push_back(q);
+  }
+  return w;
+}
+
+std::vector<Polynomial> denominators(const Parametrization& p) {
+  std::vector<Polynomial> out;
+  for (const auto& c : p.coordinates) out.push_back(c.denominator());
+  return out;
+}
+
 }  // namespace
 
-std::vector<Polynomial> common_denominator_form(const Parametrization& p) {
-  Polynomial w = Polynomial::constant(p.parameter_ring, Rational(1));
-  for (const auto& c : p.coordinates) w = lcm(w, c.denominator());
-  std::vector<Polynomial> forms = {w};
-  for (const auto& c : p.coordinates) forms.push_back(c.numerator() * divide_exact(w, c.denominator()));
+Polynomial common_denominator(const Parametrization& p, const Budget& budget) {
+  return lcm_of_members(denominators(p), p.parameter_ring, budget.in_phase(kCommonDenominator));
+}
+
+std::vector<Polynomial> common_denominator_form(const Parametrization& p, const Budget& budget) {
+  const Budget phased = budget.in_phase(kCommonDenominator);
+  const std::vector<Polynomial> q = denominators(p);
+  std::vector<Polynomial> forms = {lcm_of_members(q, p.parameter_ring, phased)};
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    // ω / q_i = lcm over j of q_j / gcd(q_j, q_i) (compare the multiplicity of each
+    // prime factor), again without dividing ω itself.
+    std::vector<Polynomial> rest;
+    for (std::size_t j = 0; j < q.size(); ++j) {
+      if (j != i) rest.push_back(divide_exact(q[j], gcd(q[j], q[i], phased), phased));
+    }
+    const Polynomial cofactor = lcm_of_members(rest, p.parameter_ring, phased);
+    const Polynomial& numerator = p.coordinates[i].numerator();
+    // A polynomial parametrization (ω = 1) passes through unchanged, without a product.
+    forms.push_back(cofactor.is_constant() ? numerator.scaled(cofactor.coefficient(0))
+                                           : numerator.multiply(cofactor, phased));
+  }
   return forms;
 }
 

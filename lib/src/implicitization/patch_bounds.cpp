@@ -247,7 +247,7 @@ PatchBounds bound_patch(const Parametrization& parametrization, const ParameterD
   check_domain(parametrization, domain);
   const RingPtr& ring = parametrization.parameter_ring;
   const std::size_t n = parametrization.coordinates.size();
-  const std::vector<Polynomial> forms = common_denominator_form(parametrization);
+  const std::vector<Polynomial> forms = common_denominator_form(parametrization, budget);
   const Layout layout = common_layout(forms, ring->num_variables());
   // The size limit bounds the Bernstein coefficients held at once: layout.size per
   // form and piece.

@@ -48,8 +48,7 @@ ScriptIdeal script_ideal(const Parametrization& p) {
   RingPtr ring = Ring::make(names);
   std::vector<std::size_t> same(names.size());
   for (std::size_t i = 0; i < same.size(); ++i) same[i] = i;
-  Polynomial l = Polynomial::constant(p.parameter_ring, Rational(1));
-  for (const auto& c : p.coordinates) l = lcm(l, c.denominator());
+  const Polynomial l = common_denominator(p);
   ScriptIdeal out;
   const std::vector<std::string> space = coordinate_names(p.coordinates.size());
   for (std::size_t v = 0; v < space.size(); ++v) {

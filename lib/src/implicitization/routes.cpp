@@ -31,15 +31,14 @@ struct ImplicitizationIdeal {
   std::vector<std::string> eliminated;
 };
 
-ImplicitizationIdeal implicitization_ideal(const Parametrization& p) {
+ImplicitizationIdeal implicitization_ideal(const Parametrization& p, const Budget& budget) {
   const Ring& params = *p.parameter_ring;
   const std::size_t k = params.num_variables();
 
   // Theorem 1.9 with L = lcm(q1, q2, q3) instead of q1·q2·q3: V(L) = V(q1·q2·q3), so
   // saturating by L removes the same points, and L has far smaller degree (NOTES.md:
   // 9.8 s against more than 300 s in Singular on a bidegree-(2,2) patch).
-  Polynomial l = Polynomial::constant(p.parameter_ring, Rational(1));
-  for (const auto& c : p.coordinates) l = lcm(l, c.denominator());
+  const Polynomial l = common_denominator(p, budget);
   const bool saturate = !l.is_constant();
 
   // Ring [w?, parameters, x, y, z]; eliminate() orders it by an elimination order for
@@ -77,7 +76,7 @@ bool resultant_applies(const Parametrization& p) {
 }
 
 ImplicitizeResult groebner_route(const Parametrization& p, const ImplicitizeParams& params) {
-  const ImplicitizationIdeal ideal = implicitization_ideal(p);
+  const ImplicitizationIdeal ideal = implicitization_ideal(p, params.budget);
   const std::size_t n = p.coordinates.size();
   const BuchbergerParams buchberger{params.buchberger, params.budget};
   const EliminationResult elimination = eliminate(ideal.generators, ideal.eliminated, buchberger);
@@ -114,7 +113,7 @@ std::optional<ImplicitizeResult> groebner_route_within(const Parametrization& p,
 }
 
 std::optional<ImplicitizeResult> modular_groebner_route(const Parametrization& p, const ImplicitizeParams& params) {
-  const ImplicitizationIdeal ideal = implicitization_ideal(p);
+  const ImplicitizationIdeal ideal = implicitization_ideal(p, params.budget);
   const std::size_t n = p.coordinates.size();
   ModularGroebnerParams modular;
   modular.buchberger = {params.buchberger, params.budget};
@@ -179,7 +178,8 @@ ImplicitizeResult interpolation_route(const Parametrization& p, const Budget& bu
   // that fits is tried first: sparse_s7t7 (degree 49) answers in 0.3 s instead of a
   // refusal.
   const std::size_t max_columns = InterpolationParams{}.max_columns;
-  if (p.coordinates.size() == 3 && space_monomial_count(implicit_degree_bound(p)) > static_cast<double>(max_columns)) {
+  if (p.coordinates.size() == 3 &&
+      space_monomial_count(implicit_degree_bound(p, budget)) > static_cast<double>(max_columns)) {
     const std::optional<ImplicitSupport> support = predict_implicit_support(p, budget);
     if (support && support->largest_class <= max_columns && support->cubed_columns <= kSparseMaxCubedColumns) {
       if (auto sparse = sparse_interpolation_route(p, *support, budget)) return std::move(*sparse);
@@ -245,7 +245,7 @@ std::optional<ImplicitizeResult> resultant_route(const Parametrization& p, const
 
 std::optional<ImplicitizeResult> resultant_route(const Parametrization& p, const Budget& budget,
                                                  std::optional<AuxiliaryResultantStats>& stats) {
-  const std::vector<Polynomial> f = common_denominator_form(p);
+  const std::vector<Polynomial> f = common_denominator_form(p, budget);
   if (p.coordinates.size() == 2) {
     return from_resultant(p, budget, stats, [&](std::size_t stable_primes) {
       return curve_auxiliary_resultant({f[0], f[1], f[2]}, plane_ring(), resultant_params(budget, stable_primes));

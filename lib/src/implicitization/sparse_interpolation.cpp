@@ -188,7 +188,7 @@ std::optional<InterpolationResult> implicitize_by_sparse_interpolation(const Par
   const Stopwatch timer;
   InterpolationStats stats;
   stats.degree_bound = support.total_degree;
-  const MapForms forms = map_forms(parametrization);
+  const MapForms forms = map_forms(parametrization, options.budget);
   check_image_dimension(forms, options.seed, options.budget);
   const std::vector<MonomialBasis> bases = class_bases(support);
   PrimeSequence primes = options.primes;
@@ -234,7 +234,7 @@ bool is_minimal_on_support(const Polynomial& candidate, const Parametrization& p
     home = it->second;
   }
   if (!home) return false;
-  const MapForms forms = map_forms(parametrization);
+  const MapForms forms = map_forms(parametrization, options.budget);
   const std::vector<MonomialBasis> bases = class_bases(support);
   PrimeSequence primes = options.primes;
   const ClassScan scan = scan_classes(forms, bases, scan_threads(support, options), primes, options);

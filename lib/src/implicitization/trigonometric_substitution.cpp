@@ -18,6 +18,9 @@ namespace {
 // parser's largest power.
 constexpr long kMaxMultiple = 1000;
 
+// The phase every limit of the conversion names.
+constexpr const char* kWhere = "the trigonometric substitution";
+
 bool is_trigonometric(const std::string& f) { return f == "cos" || f == "sin" || f == "tan"; }
 
 // Where a parameter is used: the first call of each kind, the first use outside.
@@ -194,21 +197,31 @@ Gaussian multiply(const Gaussian& a, const Gaussian& b, const Budget& budget) {
 }
 
 // (1 + sign·i·t)^n by the binomial theorem: the term C(n, m)·(sign·i)^m·t^m is real
-// for even m (sign (−1)^(m/2)), imaginary for odd m.
+// for even m (sign (−1)^(m/2)), imaginary for odd m. The terms are collected and
+// sorted once: adding them one by one to a polynomial copied every coefficient at
+// every step, quadratic in n.
 Gaussian binomial_power(const RingPtr& ring, std::size_t var, long n, int sign, const Budget& budget) {
-  budget.check_terms(static_cast<std::size_t>(n) + 1, "the trigonometric substitution");
-  Gaussian g{Polynomial(ring), Polynomial(ring)};
+  constexpr const char* kExpansion = "the binomial expansion";
+  budget.check_predicted_terms(static_cast<std::size_t>(n) + 1, kExpansion,
+                               [&] { return "(1 + i*t)^" + std::to_string(n); });
+  const std::size_t w = ring->monomial_size();
+  std::vector<Integer> coefficients[2];
+  std::vector<std::int32_t> monomials[2];
   Integer binomial = 1;
   std::vector<std::int32_t> exponents(ring->num_variables(), 0);
   for (long m = 0; m <= n; ++m) {
     exponents[var] = static_cast<std::int32_t>(m);
     const int i_power = static_cast<int>(m % 4);  // i^m = 1, i, −1, −i
     const int i_sign = (i_power >= 2 ? -1 : 1) * ((m % 2 == 1 && sign < 0) ? -1 : 1);
-    const Polynomial term = Polynomial::term(ring, to_rational(Integer(binomial * i_sign)), exponents);
-    (m % 2 == 0 ? g.re : g.im) += term;
+    const std::size_t part = static_cast<std::size_t>(m % 2);
+    coefficients[part].push_back(binomial * i_sign);
+    monomials[part].resize(monomials[part].size() + w);
+    ring->encode(exponents.data(), monomials[part].data() + monomials[part].size() - w);
     binomial = binomial * (n - m) / (m + 1);
+    if (m % 64 == 0) budget.check(kExpansion);
   }
-  return g;
+  return {Polynomial::from_terms(ring, Rational(1), std::move(coefficients[0]), std::move(monomials[0])),
+          Polynomial::from_terms(ring, Rational(1), std::move(coefficients[1]), std::move(monomials[1]))};
 }
 
 // cos, sin or tan of Σ k_j θ_j, the θ_j half angles t_j.
@@ -224,9 +237,15 @@ RationalFunction trigonometric_value(const std::string& f, const Combination& k,
     const Polynomial one_plus_t2 = Polynomial::constant(ring, Rational(1)) + t * t;
     denominator = denominator.multiply(one_plus_t2.pow(static_cast<unsigned>(n), budget), budget);
   }
-  if (f == "cos") return RationalFunction(z.re, denominator);
-  if (f == "sin") return RationalFunction(z.im, denominator);
-  return RationalFunction(z.im, z.re);
+  // In lowest terms already, so no gcd (of two polynomials of 2|k| + 1 terms per
+  // parameter) is taken: with P = Π (1 + i·t_j)^(2|k_j|) and P̄ its conjugate, the
+  // denominator's only prime factors are the 1 + t_j² = (1 + i·t_j)(1 − i·t_j), and at
+  // t_j = ±i one of P, P̄ vanishes and the other does not, so neither re = (P + P̄)/2
+  // nor im = (P − P̄)/(2i) vanishes there; and a common factor of re and im would
+  // divide P and P̄, which share none.
+  if (f == "cos") return RationalFunction::from_coprime(z.re, denominator);
+  if (f == "sin") return RationalFunction::from_coprime(z.im, denominator);
+  return RationalFunction::from_coprime(z.im, z.re);
 }
 
 // cosh, sinh or tanh of Σ k_j θ_j, the θ_j exponentials e_j: E = N/D with monomials.
@@ -241,9 +260,12 @@ RationalFunction hyperbolic_value(const std::string& f, const Combination& k, co
   const Polynomial n2 = n.multiply(n, budget);
   const Polynomial d2 = d.multiply(d, budget);
   const Polynomial two_nd = n.multiply(d, budget).scaled(Rational(2));
-  if (f == "cosh") return RationalFunction(n2 + d2, two_nd);
-  if (f == "sinh") return RationalFunction(n2 - d2, two_nd);
-  return RationalFunction(n2 - d2, n2 + d2);
+  // In lowest terms already: N and D are monomials in disjoint variables, so no
+  // variable divides N² ± D², and a common factor of N² − D² and N² + D² would divide
+  // 2N² and 2D².
+  if (f == "cosh") return RationalFunction::from_coprime(n2 + d2, two_nd);
+  if (f == "sinh") return RationalFunction::from_coprime(n2 - d2, two_nd);
+  return RationalFunction::from_coprime(n2 - d2, n2 + d2);
 }
 
 }  // namespace
@@ -277,14 +299,17 @@ RationalizedCoordinates substitute_trigonometric(const std::vector<const Express
   out.substitutions = name_substitutions(*parameters, scanner.uses(), names);
   out.parameter_ring = Ring::make(names);
   const RingPtr& ring = out.parameter_ring;
+  // The products and powers of the converted values are where the terms multiply: a
+  // limit they reach names this phase.
+  const Budget phased = budget.in_phase(kWhere);
   const CallEvaluator calls = [&](const Expression& call) {
     const Combination& k = scanner.combination(call);
-    return is_trigonometric(call.name) ? trigonometric_value(call.name, k, ring, budget)
-                                       : hyperbolic_value(call.name, k, ring, budget);
+    return is_trigonometric(call.name) ? trigonometric_value(call.name, k, ring, phased)
+                                       : hyperbolic_value(call.name, k, ring, phased);
   };
   for (std::size_t i = 0; i < coordinates.size(); ++i) {
     try {
-      out.coordinates.push_back(evaluate_rational_function(*coordinates[i], ring, budget, calls));
+      out.coordinates.push_back(evaluate_rational_function(*coordinates[i], ring, phased, calls));
     } catch (const InputError& e) {
       throw e.in_field(fields[i]);
     }

@@ -104,7 +104,7 @@ bool substitutes_to_zero(const Polynomial& implicit, const Parametrization& para
   if (implicit.is_zero()) return true;
   // ω = lcm of the denominators and ξ_v = p_v·(ω / q_v), in `forms` as ω, ξ_1, …, ξ_n;
   // all scaled to integers (G only changes by a non-zero constant).
-  std::vector<Polynomial> forms = common_denominator_form(parametrization);
+  std::vector<Polynomial> forms = common_denominator_form(parametrization, budget);
   scale_to_integers(forms);
   return substitutes_to_zero(implicit, parametrization, forms, budget);
 }

@@ -86,13 +86,15 @@ RationalFunction rational_function_of(const Expression& e, const RingPtr& ring, 
       return RationalFunction(polynomial_of(e, ring, budget));
     case Kind::sum: {
       RationalFunction s{Polynomial(ring)};
-      for (const auto& c : e.children) s = s + rational_function_of(*c, ring, budget, calls);
-      budget.check_terms(s.numerator().num_terms(), "parsing");
+      for (const auto& c : e.children) {
+        s = s.add(rational_function_of(*c, ring, budget, calls), budget);
+        budget.check_terms(s.numerator().num_terms(), "parsing");
+      }
       return s;
     }
     case Kind::product: {
       RationalFunction p(Polynomial::constant(ring, Rational(1)));
-      for (const auto& c : e.children) p = p * rational_function_of(*c, ring, budget, calls);
+      for (const auto& c : e.children) p = p.multiply(rational_function_of(*c, ring, budget, calls), budget);
       return p;
     }
     case Kind::negate:
@@ -102,7 +104,7 @@ RationalFunction rational_function_of(const Expression& e, const RingPtr& ring, 
       if (d.numerator().is_zero()) {
         throw InputError("division_by_zero", "the denominator is identically zero", e.position);
       }
-      return RationalFunction(Polynomial::constant(ring, Rational(1))) / d;
+      return RationalFunction(Polynomial::constant(ring, Rational(1))).divide(d, budget);
     }
     case Kind::power:
       return rational_function_of(*e.children[0], ring, budget, calls).pow(e.exponent, budget);

@@ -1,7 +1,10 @@
 #include "implicitizer/polynomial/polynomial.hpp"
 
 #include <algorithm>
+#include <limits>
+#include <new>
 #include <numeric>
+#include <optional>
 #include <queue>
 #include <stdexcept>
 
@@ -52,6 +55,72 @@ void merge_scaled(const Ring& ring, const Integer& a, const std::vector<Integer>
       ++j;
     }
   }
+}
+
+constexpr const char* kMultiplication = "polynomial multiplication";
+
+// The number of terms of a·b when it is known before multiplying, else nullopt. It is
+// known exactly when one factor is a monomial (multiplying by it is injective on
+// monomials) or when no variable occurs in both: then a·b's monomials are the pairs
+// of a's and b's, all distinct, and no coefficient cancels (each is one product of
+// non-zero integers). Shared variables can merge pairs, so an upper bound such as
+// na·nb would refuse products that collapse ((1+t)^500·(1−t)^500 has 501 terms):
+// those are refused while they grow instead.
+std::optional<std::size_t> exact_product_terms(const Polynomial& a, const Polynomial& b) {
+  const std::size_t na = a.num_terms(), nb = b.num_terms();
+  if (na == 1 || nb == 1) return na * nb;
+  if (share_a_variable(a, b)) return std::nullopt;
+  // Saturating: a count past size_t is refused by any term limit all the same.
+  return na > std::numeric_limits<std::size_t>::max() / nb ? std::numeric_limits<std::size_t>::max() : na * nb;
+}
+
+// Whether the exponent vectors of p's terms are affinely independent (v_i − v_0 of
+// full rank m − 1): then the multisets of e terms give distinct monomials, so p^e has
+// exactly C(m − 1 + e, e) terms and no coefficient cancels (each is one multinomial
+// coefficient times one product of p's coefficients). Bareiss elimination on the
+// differences, exact over ℤ.
+bool has_affinely_independent_support(const Polynomial& p) {
+  const std::size_t m = p.num_terms();
+  const Ring& ring = *p.ring();
+  const std::size_t n = ring.num_variables();
+  if (m <= 2) return true;  // distinct monomials
+  if (m - 1 > n) return false;
+  std::vector<std::vector<Integer>> rows(m - 1, std::vector<Integer>(n));
+  const std::int32_t* base = ring.exponents(p.monomial(0));
+  for (std::size_t i = 1; i < m; ++i) {
+    const std::int32_t* e = ring.exponents(p.monomial(i));
+    for (std::size_t v = 0; v < n; ++v) rows[i - 1][v] = Integer(e[v]) - Integer(base[v]);
+  }
+  Integer previous = 1;
+  std::size_t rank = 0;
+  for (std::size_t col = 0; col < n && rank < rows.size(); ++col) {
+    std::size_t pivot = rank;
+    while (pivot < rows.size() && rows[pivot][col] == 0) ++pivot;
+    if (pivot == rows.size()) continue;
+    std::swap(rows[pivot], rows[rank]);
+    for (std::size_t r = rank + 1; r < rows.size(); ++r) {
+      for (std::size_t c = col + 1; c < n; ++c) {
+        rows[r][c] = (rows[rank][col] * rows[r][c] - rows[r][col] * rows[rank][c]) / previous;
+      }
+      rows[r][col] = 0;
+    }
+    previous = rows[rank][col];
+    ++rank;
+  }
+  return rank == m - 1;
+}
+
+// C(m − 1 + e, e), the number of multisets of e of m terms, saturating at the largest
+// size_t.
+std::size_t multiset_count(std::size_t m, unsigned e) {
+  Integer count = 1;
+  for (unsigned k = 1; k <= e; ++k) {
+    count = count * Integer(static_cast<unsigned long>(m - 1 + k)) / Integer(k);
+    if (count > Integer(static_cast<unsigned long>(std::numeric_limits<std::size_t>::max()))) {
+      return std::numeric_limits<std::size_t>::max();
+    }
+  }
+  return static_cast<std::size_t>(count.get_ui());
 }
 
 }  // namespace
@@ -136,6 +205,24 @@ Polynomial Polynomial::from_terms(RingPtr ring, const Rational& content, std::ve
   return Polynomial(std::move(ring), content, std::move(c), std::move(m));
 }
 
+bool share_a_variable(const Polynomial& a, const Polynomial& b) {
+  const std::vector<bool> in_a = a.occurring_variables();
+  const std::vector<bool> in_b = b.occurring_variables();
+  for (std::size_t v = 0; v < in_a.size() && v < in_b.size(); ++v) {
+    if (in_a[v] && in_b[v]) return true;
+  }
+  return false;
+}
+
+std::vector<bool> Polynomial::occurring_variables() const {
+  std::vector<bool> occurs(ring_->num_variables(), false);
+  for (std::size_t t = 0; t < num_terms(); ++t) {
+    const std::int32_t* e = ring_->exponents(monomial(t));
+    for (std::size_t v = 0; v < occurs.size(); ++v) occurs[v] = occurs[v] || e[v] != 0;
+  }
+  return occurs;
+}
+
 bool Polynomial::is_constant() const {
   if (is_zero()) return true;
   return num_terms() == 1 && ring_->total_degree(monomial(0)) == 0;
@@ -196,6 +283,24 @@ Polynomial Polynomial::multiply(const Polynomial& other, const Budget& budget) c
   if (std::int64_t{total_degree()} + other.total_degree() > kMaxTotalDegree) {
     throw LimitExceeded(Limit::size, "degree limit exceeded in a product");
   }
+  // The prediction costs a pass over both factors: only where a limit can use it.
+  std::optional<std::size_t> terms;
+  if (budget.max_terms() != 0 || budget.memory_account() != nullptr) terms = exact_product_terms(*this, other);
+  if (terms) {
+    budget.check_predicted_terms(*terms, kMultiplication, [&] {
+      return "the product of " + std::to_string(num_terms()) + " and " + std::to_string(other.num_terms()) +
+             " terms in disjoint variables";
+    });
+  }
+  try {
+    return multiply_johnson(other, budget, terms.value_or(0));
+  } catch (const std::bad_alloc&) {
+    // A vector the memory account refused at once: the limit, named with the phase.
+    budget.rethrow_bad_alloc(kMultiplication);
+  }
+}
+
+Polynomial Polynomial::multiply_johnson(const Polynomial& other, const Budget& budget, std::size_t known_terms) const {
   // Johnson's heap multiplication: one heap entry per term of the shorter factor,
   // producing the product's terms in decreasing order with O(log n) work each.
   const Polynomial& a = num_terms() <= other.num_terms() ? *this : other;
@@ -215,6 +320,9 @@ Polynomial Polynomial::multiply(const Polynomial& other, const Budget& budget) c
   }
   std::vector<Integer> c;
   std::vector<std::int32_t> m;
+  // A known size is allocated once: no doubling holds the old and the new array at once.
+  c.reserve(known_terms);
+  m.reserve(known_terms * w);
   std::size_t steps = 0;
   while (!heap.empty()) {
     const std::size_t i = heap.top();
@@ -234,13 +342,13 @@ Polynomial Polynomial::multiply(const Polynomial& other, const Budget& budget) c
       ring.multiply(a.monomial(i), b.monomial(next[i]), product.data() + i * w);
       heap.push(i);
     }
-    if ((++steps & 0xfff) == 0) budget.check_terms(c.size(), "polynomial multiplication");
+    if ((++steps & 0xfff) == 0) budget.check_terms(c.size(), kMultiplication);
   }
   if (!c.empty() && c.back() == 0) {
     c.pop_back();
     m.resize(m.size() - w);
   }
-  budget.check_terms(c.size(), "polynomial multiplication");
+  budget.check_terms(c.size(), kMultiplication);
   // Gauss's lemma: the product of primitive polynomials is primitive.
   Polynomial r(ring_);
   r.content_ = content_ * other.content_;
@@ -254,6 +362,11 @@ Polynomial Polynomial::pow(unsigned exponent, const Budget& budget) const {
   if (exponent == 0) return result;
   if (std::int64_t{total_degree()} * exponent > kMaxTotalDegree) {
     throw LimitExceeded(Limit::size, "degree limit exceeded in a power");
+  }
+  if (budget.max_terms() != 0 && !is_zero() && has_affinely_independent_support(*this)) {
+    budget.check_predicted_terms(multiset_count(num_terms(), exponent), "polynomial power", [&] {
+      return "the power " + std::to_string(exponent) + " of " + std::to_string(num_terms()) + " terms";
+    });
   }
   // Repeated multiplication by the base keeps one factor small, which for sparse
   // polynomials beats squaring (the squares are dense and large).

@@ -36,8 +36,8 @@ double& component(V& v, std::size_t i) { return i == 0 ? v.x : (i == 1 ? v.y : v
 // sampling only (the sample's rounding is covered by a slack, see build()).
 class DoublePatch {
  public:
-  explicit DoublePatch(const Parametrization& parametrization) {
-    for (const Polynomial& f : common_denominator_form(parametrization)) {
+  DoublePatch(const Parametrization& parametrization, const Budget& budget) {
+    for (const Polynomial& f : common_denominator_form(parametrization, budget)) {
       Form form;
       for (std::size_t t = 0; t < f.num_terms(); ++t) {
         form.coefficients.push_back(to_mpq(f.coefficient(t)).get_d());
@@ -152,7 +152,7 @@ class PointGrid {
 // a sample point near every point of the patch without descending far.
 std::vector<V> sample_patch(const Parametrization& parametrization, const ParameterDomain& domain, double spacing,
                             const Budget& budget) {
-  const DoublePatch patch(parametrization);
+  const DoublePatch patch(parametrization, budget);
   const std::size_t m = domain.intervals.size();
   std::vector<std::pair<double, double>> range;
   for (const auto& [lo, hi] : domain.intervals) range.emplace_back(to_mpq(lo).get_d(), to_mpq(hi).get_d());
@@ -780,7 +780,7 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
   double extent = 0;
   for (const V& p : points) extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
   const PointGrid sample(points, reach / 2);
-  const CoverContext coarse_ctx{parametrization, DoublePatch(parametrization), budget,
+  const CoverContext coarse_ctx{parametrization, DoublePatch(parametrization, budget), budget,
                                 {0, PatchBoundsParams().max_denominator_depth}, domain};
   const Node hull = make_node(coarse_ctx, domain, false);
   // Every node box lies in the Bernstein hull of D (de Casteljau's control points
@@ -795,7 +795,7 @@ PatchCover PatchCover::build(const Parametrization& parametrization, const Param
   FarCellSearch far(region, safe, sample, reach - 1e-12 * std::max(extent, h), params.resolution * h, budget, params,
                     stats);
 
-  CoverContext ctx{parametrization, DoublePatch(parametrization), budget,
+  CoverContext ctx{parametrization, DoublePatch(parametrization, budget), budget,
                    {params.tightening_depth, PatchBoundsParams().max_denominator_depth}, domain};
   if (domain.intervals.size() == 2 && searched) ctx.beyond = beside_edges(ctx, frame, h, params);
   const std::vector<Node> nodes = refine_quadtree(ctx, domain, searched ? &far : nullptr, frame, h, params, stats);

@@ -93,6 +93,23 @@ class Budget {
   /// Throws LimitExceeded (size) naming `where` if `terms` exceeds the term limit,
   /// then does check(where).
   void check_terms(std::size_t terms, const char* where) const;
+  /// Throws LimitExceeded (size) naming `where` and `describe()` ("the product of 1001
+  /// and 1001 terms", called only then) if a result predicted to have `terms` terms
+  /// would pass the term limit: the refusal comes before the result is built, not
+  /// after. Then does check(where).
+  template <typename Describe>
+  void check_predicted_terms(std::size_t terms, const char* where, Describe describe) const {
+    if (max_terms_ != 0 && terms > max_terms_) throw_predicted_terms(terms, where, describe());
+    check(where);
+  }
+
+  /// A copy whose messages add "in `phase`" to the loop they name ("polynomial
+  /// multiplication in the common denominator"), so that a step used by many phases
+  /// says which one it served. `phase` must be a string literal (it is kept by
+  /// address). The copy shares everything else with this budget.
+  Budget in_phase(const char* phase) const;
+  /// The phase in_phase() named, or null.
+  const char* phase() const { return phase_; }
 
   /// Called while a std::bad_alloc is being handled: throws LimitExceeded (memory)
   /// naming `where` when this budget's memory account refused the allocation
@@ -122,6 +139,10 @@ class Budget {
   }
 
  private:
+  // `where`, and the phase when there is one: what every message names.
+  std::string located(const char* where) const;
+  [[noreturn]] void throw_predicted_terms(std::size_t terms, const char* where, const std::string& what) const;
+
   bool has_deadline_ = false;
   Clock::time_point deadline_{};
   double timeout_seconds_ = 0;
@@ -129,6 +150,7 @@ class Budget {
   std::size_t max_variables_ = 0;
   std::size_t max_polynomials_ = 0;
   std::uint64_t max_work_ = 0;
+  const char* phase_ = nullptr;                       // a string literal, or null
   std::shared_ptr<std::atomic<std::uint64_t>> work_;  // null without an allowance
   std::shared_ptr<MemoryAccount> memory_;             // null without a memory limit
   // What every copy shares from construction on, in one allocation: whoever holds any

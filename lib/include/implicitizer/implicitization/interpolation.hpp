@@ -110,8 +110,9 @@ struct InterpolationResult {
 ///     general plane of that codimension) and the total degree does not grow: N^(n−1).
 /// The bound is that of the resultant route (2mn, n², n); base points and a map of
 /// degree l > 1 make the true degree smaller (degree·l ≤ the bound). Returns 0 for
-/// k < n − 1, where the image cannot be a hypersurface.
-std::int32_t implicit_degree_bound(const Parametrization& parametrization);
+/// k < n − 1, where the image cannot be a hypersurface. The common denominator it
+/// reads is checked against `budget` (common_denominator_form()).
+std::int32_t implicit_degree_bound(const Parametrization& parametrization, const Budget& budget = Budget());
 
 /// The implicit equation of the image by interpolation, as the header describes:
 ///   1. the Jacobian's rank at a random point modulo a prime (and, when it is below

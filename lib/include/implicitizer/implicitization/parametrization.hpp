@@ -26,10 +26,17 @@ struct Parametrization {
   std::vector<ParameterSubstitution> substitutions;
 };
 
+/// ω = lcm of the coordinates' denominators. It grows as the product of coprime
+/// denominators, so its products are checked against `budget`, and a limit names this
+/// phase ("the common denominator of the parametrization").
+Polynomial common_denominator(const Parametrization& parametrization, const Budget& budget = Budget());
+
 /// ω, ξ_1, …, ξ_n with x_v = ξ_v / ω over one denominator: ω the lcm of the
 /// coordinates' denominators q_v, ξ_v = p_v·(ω / q_v). The form the resultant route
-/// and the verification work with.
-std::vector<Polynomial> common_denominator_form(const Parametrization& parametrization);
+/// and the verification work with. Its products are checked against `budget`, and a
+/// limit names the phase of common_denominator().
+std::vector<Polynomial> common_denominator_form(const Parametrization& parametrization,
+                                                const Budget& budget = Budget());
 
 /// The names of the coordinates of a parametrization with `count` (2 or 3)
 /// coordinates: x, y and z.

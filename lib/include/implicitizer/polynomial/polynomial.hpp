@@ -71,6 +71,8 @@ class Polynomial {
   std::int32_t degree_in(std::size_t var) const;
   /// Whether the variable `var` occurs.
   bool involves(std::size_t var) const { return degree_in(var) > 0; }
+  /// One flag per variable of the ring: whether it occurs.
+  std::vector<bool> occurring_variables() const;
 
   Polynomial operator-() const;
   Polynomial operator+(const Polynomial& other) const;
@@ -79,9 +81,15 @@ class Polynomial {
   Polynomial& operator+=(const Polynomial& other) { return *this = *this + other; }
   Polynomial& operator-=(const Polynomial& other) { return *this = *this - other; }
   Polynomial& operator*=(const Polynomial& other) { return *this = *this * other; }
-  /// Product checked against `budget` (terms of the result, time).
+  /// Product checked against `budget`: refused before it is built when its number of
+  /// terms is known in advance (one factor a monomial, or no variable shared) and
+  /// passes the term limit; otherwise refused while it grows, within a few thousand
+  /// terms of the limit; time, memory and cancellation checked as it grows.
   Polynomial multiply(const Polynomial& other, const Budget& budget) const;
-  /// this^exponent; checks `budget` after each multiplication.
+  /// this^exponent, checked against `budget`: refused before it is built when its
+  /// number of terms is known in advance (the binomial count C(m − 1 + e, e) of m
+  /// terms whose exponent vectors are affinely independent, e.g. any two terms) and
+  /// passes the term limit; otherwise each multiplication is checked as it grows.
   Polynomial pow(unsigned exponent, const Budget& budget = Budget()) const;
   /// this·c.
   Polynomial scaled(const Rational& c) const;
@@ -119,6 +127,8 @@ class Polynomial {
   Polynomial(RingPtr ring, Rational content, std::vector<Integer> coefficients, std::vector<std::int32_t> monomials);
   // Restores the invariants after the coefficients were changed but stay sorted.
   void normalize();
+  // multiply() after its checks: Johnson's heap, `known_terms` (0: unknown) reserved.
+  Polynomial multiply_johnson(const Polynomial& other, const Budget& budget, std::size_t known_terms) const;
   friend class PolynomialAccess;
 
   RingPtr ring_;
@@ -132,6 +142,9 @@ class Polynomial {
 /// modular algorithms need, and harmless where only the polynomials' ratios matter
 /// (a parametrization over a common denominator, a resultant up to a constant).
 void scale_to_integers(std::span<Polynomial> polynomials);
+
+/// Whether some variable occurs in both `a` and `b` (same ring).
+bool share_a_variable(const Polynomial& a, const Polynomial& b);
 
 /// The sum of `parts` (all in `ring`), added pairwise so that long sums cost
 /// O(total · log count) instead of O(total · count).
