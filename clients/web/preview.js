@@ -263,10 +263,10 @@ ${side ? `
 // whose ends lie on different sides of F = 0 (the signed function's sign) is scanned
 // in 16 parts, and each part whose ends differ is bisected on the sign in turn, the
 // first crossing where the sheet's value is below eps a hit; a crossing off the drawn
-// sheet (its untrimmed continuation, the box) lets the scan go on. All of it is one
-// loop whose every pass evaluates the sheet and the sign once, rather than loops
-// nested in the march: a GPU that runs both sides of a branch (SwiftShader does)
-// would pay for the nested loops on every step.
+// sheet (its untrimmed continuation) lets the scan go on. All of it is one loop whose
+// every pass evaluates the sheet and the sign once, rather than loops nested in the
+// march: the surface's code then appears once here, where a GPU compiler inlines every
+// call (tetrahedronNormal says why that matters).
 float pv_march_sheet(vec3 ro, vec3 rd, float eps) {
   float t = 0.0;                      // marching: the current point
   float lastT = 0.0, lastSign = 0.0;  // the last point with a sign, and that sign
