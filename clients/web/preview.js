@@ -318,12 +318,11 @@ float pv_march_sheet(vec3 ro, vec3 rd, float eps) {
       else b = m;
       if (b - a <= 1e-3 * eps || ++halvings >= 40) {
         if (f < eps) return m;
-        // A crossing off the sheet: the scan goes on from the part's end.
+        // A crossing off the sheet: the scan goes on from the part's end (evaluated
+        // again, with the side it had, so the scan's own step moves past it).
         phase = 1;
         scanT = b;
         scanSign = sb;
-        ++part;
-        if (part > 16) { phase = 0; lastT = endT; lastSign = endSign; t = endT; }
       }
     }
   }

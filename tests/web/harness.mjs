@@ -202,3 +202,13 @@ export async function dragPreview(page, dx, dy, steps = 2) {
   await page.mouse.move(cx + dx, cy + dy, { steps });
   await page.mouse.up();
 }
+
+/// Intersection over union of two masks of 0s and 1s of one size (1 when both are empty).
+export function iou(a, b) {
+  let both = 0, either = 0;
+  for (let i = 0; i < a.length; ++i) {
+    both += a[i] & b[i];
+    either += a[i] | b[i];
+  }
+  return either ? both / either : 1;
+}

@@ -29,6 +29,7 @@ import { buildExamples, examplesPath } from '../../scripts/make-web-examples.mjs
 import {
   decodePng,
   dragPreview,
+  iou,
   launchChromium,
   readPreviewCanvas,
   root,
@@ -73,15 +74,6 @@ async function metric(name) {
   const text = await (await fetch(server.url + '/metrics')).text();
   const line = text.split('\n').find((l) => l.startsWith(name + ' ') || l.startsWith(name + '{'));
   return line ? Number(line.trim().split(/\s+/).pop()) : 0;
-}
-
-function iou(a, b) {
-  let both = 0, either = 0;
-  for (let i = 0; i < a.length; ++i) {
-    both += a[i] & b[i];
-    either += a[i] | b[i];
-  }
-  return either ? both / either : 1;
 }
 
 /// The preview canvas's pixels and the view it shows (harness.mjs readPreviewCanvas).

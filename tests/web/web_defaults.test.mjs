@@ -20,7 +20,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { examplesPath } from '../../scripts/make-web-examples.mjs';
-import { BACKGROUND, launchChromium, readPreviewCanvas, sharedDir, startServer, stopServer, watchErrors } from './harness.mjs';
+import { BACKGROUND, iou, launchChromium, readPreviewCanvas, sharedDir, startServer, stopServer, watchErrors } from './harness.mjs';
 
 const IOU_MIN = 0.97;
 const HOLE_FRACTION_MAX = 1e-3; // of the patch's pixels: stray pixels, not a hole
@@ -55,15 +55,6 @@ async function hitMask() {
     mask[i] = Math.abs(rgb[3 * i] - BACKGROUND) + Math.abs(rgb[3 * i + 1] - BACKGROUND) + Math.abs(rgb[3 * i + 2] - BACKGROUND) > 6 ? 1 : 0;
   }
   return { width, height, mask };
-}
-
-function iou(a, b) {
-  let both = 0, either = 0;
-  for (let i = 0; i < a.length; ++i) {
-    both += a[i] & b[i];
-    either += a[i] | b[i];
-  }
-  return either ? both / either : 1;
 }
 
 /// Background pixels of `mask` that the background outside cannot reach (4-connected):
