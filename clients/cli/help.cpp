@@ -184,7 +184,8 @@ options:
   --eval FILE           instead of the GLSL, print the value at each point of FILE
                         (- : standard input), one per line (%.9g): lines "x y z"
                         ("x y" for a curve), blank lines and # comments skipped;
-                        computed in C++ float, as the GLSL computes it
+                        computed in C++ float, as the GLSL computes it; streamed
+                        (a file is checked whole first; - prints as it reads)
   --json                print the JSON object POST /v1/sdf returns (with --eval,
                         on the first line, the values after it)
   -h, --help            this text

@@ -1,6 +1,8 @@
 #include "sdf_command.hpp"
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
 
@@ -23,17 +25,26 @@ constexpr const char* kCommand = "sdf";
 struct SdfCommand {
   SdfRequest request;
   std::optional<std::string> scene_text;  // the --scene file's contents
-  std::optional<std::string> eval_text;   // the --eval file's contents
+  std::optional<std::string> eval_path;   // the --eval file ("-": standard input)
 };
 
 // One value per line: the scene's value at each point, by CompiledScene::evaluate<float>
 // (the GLSL's operations in its order, on the point rounded to float as a shader
 // receives it). %.9g prints a float exactly enough to read it back.
-void print_values(const CompiledScene& scene, const std::vector<std::array<double, 3>>& points) {
-  for (const std::array<double, 3>& p : points) {
+void print_values(const CompiledScene& scene, std::istream& in, int dimension) {
+  PointListReader points(in, dimension);
+  while (const std::optional<std::array<double, 3>> p = points.next()) {
     const float value = scene.evaluate<float>(
-        Vec3<float>{static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
+        Vec3<float>{static_cast<float>((*p)[0]), static_cast<float>((*p)[1]), static_cast<float>((*p)[2])});
     std::printf("%.9g\n", static_cast<double>(value));
+  }
+}
+
+// Reads the whole point file once, keeping nothing, so that a malformed line is
+// reported before any value is printed.
+void check_points(std::istream& in, int dimension) {
+  PointListReader points(in, dimension);
+  while (points.next()) {
   }
 }
 
@@ -52,7 +63,10 @@ int run_sdf_command(std::span<const std::string> args) {
     report.json = arguments.has("json");
     if (!arguments.positionals().empty()) throw UsageError("unexpected argument '" + arguments.positionals()[0] + "'");
     command.scene_text = read_scene_flags(arguments, report.json, command.request);
-    if (const auto eval = arguments.value("eval")) command.eval_text = read_point_file(*eval);
+    if (const auto eval = arguments.value("eval")) {
+      if (*eval != "-") open_point_file(*eval);  // unreadable: a usage error, before any work
+      command.eval_path = *eval;
+    }
   } catch (const UsageError& e) {
     return report_usage_error(e.what(), kCommand);
   }
@@ -64,16 +78,27 @@ int run_sdf_command(std::span<const std::string> args) {
     if (command.scene_text) request.scene = parse_scene_json(*command.scene_text, "scene");
     const CompiledSdfRequest compiled = compile_sdf_request(request);
     const SdfAnswer answer = describe_sdf_request(compiled);
-    // Parsed before anything is printed, so a malformed line leaves stdout empty.
-    std::vector<std::array<double, 3>> points;
-    if (command.eval_text) points = parse_point_list(*command.eval_text, answer.dimension);
+    // A regular file is read twice, first to check it, so that a malformed line leaves
+    // stdout empty; standard input or a pipe is read once, its values printed as its
+    // lines arrive (a malformed line then ends the output after the values before it).
+    std::ifstream file;
+    if (command.eval_path && *command.eval_path != "-") {
+      file = open_point_file(*command.eval_path);
+      std::error_code ignored;
+      if (std::filesystem::is_regular_file(*command.eval_path, ignored)) {
+        check_points(file, answer.dimension);
+        file.clear();
+        file.seekg(0);
+        if (!file) throw UsageError("cannot read point file '" + *command.eval_path + "' again");
+      }
+    }
     if (report.json) {
       std::cout << encode_sdf_response(answer) << '\n';
-    } else if (!command.eval_text) {
+    } else if (!command.eval_path) {
       std::cout << answer.glsl;
     }
     std::cout.flush();
-    print_values(compiled.scene, points);
+    if (command.eval_path) print_values(compiled.scene, file.is_open() ? file : std::cin, answer.dimension);
   });
 }
 

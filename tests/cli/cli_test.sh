@@ -483,6 +483,60 @@ printf '1 2 three\n' >"$WORK/word.txt"
 expect_json "sdf --eval json error" 3 'j["error"]["code"] == "invalid_point" and j["error"]["field"] == "eval" and "line 1" in j["error"]["message"]' \
   sdf --implicit "x+z" --eval "$WORK/word.txt" --json
 expect_status "sdf --eval missing file" 2 "cannot read point file" sdf --implicit "x+z" --eval "$WORK/absent.txt"
+expect_status "sdf --eval a directory" 2 "cannot read point file" sdf --implicit "x+z" --eval "$WORK"
+# A file is checked whole before any value is printed; standard input is read once, so
+# a malformed line ends its values after those of the lines before it (x + z at
+# (1, 2, 3): 4/sqrt(2)).
+run sdf --implicit "x+z" --eval "$WORK/short.txt"
+if [[ $(status) == 3 && ! -s "$WORK/out" ]]; then pass; else fail "sdf --eval FILE, malformed line 3: nothing printed"; fi
+"$BIN" sdf --implicit "x+z" --eval - <"$WORK/short.txt" >"$WORK/out" 2>"$WORK/err"
+echo $? >"$WORK/rc"
+if [[ $(status) == 3 && $(cat "$WORK/out") == 2.82842708 ]] && grep -q "line 3" "$WORK/err"; then pass; else
+  fail "sdf --eval -, malformed line 3: the first point's value, then the error"
+fi
+# Issue 41: --eval read its whole file (81 MB of points took 288 MB, one 300 MB line
+# 1.76 GB). Streamed, its peak memory does not grow with the file: a million points, a
+# 100 MB line of blanks and a 100 MB token each cost what one point costs (+8 MiB).
+peak_kib() {  # peak_kib STDIN ARGS...: the binary's peak RSS in KiB; status in $WORK/rc
+  python3 - "$@" <<'PY'
+import os, resource, subprocess, sys
+stdin = subprocess.DEVNULL if sys.argv[1] == "none" else open(sys.argv[1], "rb")
+r = subprocess.run(sys.argv[2:], stdin=stdin, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+open(os.environ["WORK"] + "/rc", "w").write(f"{r.returncode}\n")
+print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)
+PY
+}
+export WORK
+printf '1 2 3\n' >"$WORK/one.txt"
+yes "0.5 0.5 0.25" | head -n 1000000 >"$WORK/million.txt"
+head -c 100000000 /dev/zero | tr '\0' ' ' >"$WORK/blank_line.txt"
+echo "1 2 3" >>"$WORK/blank_line.txt"
+head -c 100000000 /dev/zero | tr '\0' '1' >"$WORK/long_token.txt"
+one=$(peak_kib none "$BIN" sdf --implicit "x^2+y^2+z^2-1" --eval "$WORK/one.txt")
+million=$(peak_kib none "$BIN" sdf --implicit "x^2+y^2+z^2-1" --eval "$WORK/million.txt")
+if [[ $(status) == 0 ]] && ((million <= one + 8192)); then pass; else
+  fail "sdf --eval, a million points: peak ${million} KiB against ${one} KiB for one"
+fi
+million=$(peak_kib "$WORK/million.txt" "$BIN" sdf --implicit "x^2+y^2+z^2-1" --eval -)
+if [[ $(status) == 0 ]] && ((million <= one + 8192)); then pass; else
+  fail "sdf --eval -, a million points: peak ${million} KiB against ${one} KiB for one"
+fi
+line=$(peak_kib "$WORK/blank_line.txt" "$BIN" sdf --implicit "x^2+y^2+z^2-1" --eval -)
+if [[ $(status) == 0 ]] && ((line <= one + 8192)); then pass; else
+  fail "sdf --eval -, a 100 MB line: peak ${line} KiB against ${one} KiB for one"
+fi
+token=$(peak_kib "$WORK/long_token.txt" "$BIN" sdf --implicit "x^2+y^2+z^2-1" --eval -)
+if [[ $(status) == 3 ]] && ((token <= one + 8192)); then pass; else
+  fail "sdf --eval -, a 100 MB token: invalid_point at peak ${token} KiB against ${one} KiB for one"
+fi
+expect_status "sdf --eval a 100 MB token" 3 "line 1: a token of more than 1024 characters" \
+  sdf --implicit "x+z" --eval "$WORK/long_token.txt"
+"$BIN" sdf --implicit "x^2+y^2+z^2-1" --eval "$WORK/million.txt" >"$WORK/out" 2>"$WORK/err"
+value=$(echo "0.5 0.5 0.25" | "$BIN" sdf --implicit "x^2+y^2+z^2-1" --eval -)
+if [[ $(wc -l <"$WORK/out") == 1000000 && $(sort -u "$WORK/out") == "$value" ]]; then pass; else
+  fail "sdf --eval, a million points: a million values, each the one point's $value"
+fi
+rm -f "$WORK/million.txt" "$WORK/blank_line.txt" "$WORK/long_token.txt" "$WORK/out"
 # Shapes picked by auto, and plane curves (issue 18; the semantics are lib/scene's).
 expect_json "sdf auto saddle is a sheet" 0 'j["shape"] == "sheet" and j["dimension"] == 3' sdf --implicit "z-x*y" --json
 # The plane z = 0 as a sheet: |z| (F/|grad F| = z), >= 0 on both sides.
