@@ -51,6 +51,13 @@ const screenshotPath =
 
 const SPHERE = { x: '2*s/(1+s^2+t^2)', y: '2*t/(1+s^2+t^2)', z: '(1-s^2-t^2)/(1+s^2+t^2)' };
 const IOU_MIN = 0.9;
+// How long a wait for a picture may take before the test fails: a hang guard, not a
+// speed requirement. The heaviest picture here (Enneper's trimmed sheet, full
+// resolution on SwiftShader) came within a minute of 180 s in a fresh-clone .ci/run.
+const WAIT_MS = 400000;
+// The page's Resolution for the trimmed sheets (a quarter of the pixels): what they
+// test is the picture's content, compared with the CPU renderer's of the same size.
+const HEAVY_RESOLUTION = '0.5';
 
 let server; // {process, url, logPath}
 let browser;
@@ -83,15 +90,30 @@ function readCanvas() {
 
 /// Waits until the preview has finished an image of `equation` in `mode` newer than
 /// frame `after`.
-async function waitForImage(equation, mode, afterFrame, timeout = 120000) {
-  await page.waitForFunction(
+async function waitForImage(equation, mode, afterFrame, timeout = WAIT_MS) {
+  await withPreviewState(page.waitForFunction(
     ([eq, m, f]) => {
       const d = document.getElementById('preview').dataset;
       return d.state === 'done' && d.equation === eq && d.mode === m && Number(d.frame || 0) > f;
     },
     [equation, mode, afterFrame],
     { timeout, polling: 100 },
-  );
+  ));
+}
+
+/// `waiting`, whose timeout, if it comes, says where the preview was: the state, the
+/// pictures drawn and their factor, the function and status.
+async function withPreviewState(waiting) {
+  try {
+    await waiting;
+  } catch (e) {
+    const state = await page.evaluate(() => {
+      const { request, view, equation, ...d } = document.getElementById('preview').dataset;
+      return JSON.stringify({ ...d, stats: document.getElementById('preview-stats').textContent });
+    });
+    e.message += `\npreview: ${state}`;
+    throw e;
+  }
 }
 
 async function currentFrame() {
@@ -101,8 +123,8 @@ async function currentFrame() {
 /// Waits until the preview has finished an image newer than frame `afterFrame` whose
 /// canvas attributes satisfy `predicate(dataset, arg)` (run in the page: it sees only
 /// its arguments).
-async function waitForFrame(afterFrame, predicate, arg = null, timeout = 180000) {
-  await page.waitForFunction(
+async function waitForFrame(afterFrame, predicate, arg = null, timeout = WAIT_MS) {
+  await withPreviewState(page.waitForFunction(
     ([f, source, a]) => {
       const d = document.getElementById('preview').dataset;
       // eslint-disable-next-line no-new-func
@@ -110,7 +132,7 @@ async function waitForFrame(afterFrame, predicate, arg = null, timeout = 180000)
     },
     [afterFrame, predicate.toString(), arg],
     { timeout, polling: 100 },
-  );
+  ));
 }
 
 /// POST /v1/render of the view on the canvas (its object, shape, box, eye, target,
@@ -442,6 +464,8 @@ test('typing an implicit equation directly draws it', async () => {
 test('the hyperbolic paraboloid, Enneper\'s surface and a bicubic patch are two-sided sheets', async (t) => {
   await page.click('#tab-parametric');
   await setMode('fast');
+  t.after(() => page.selectOption('#resolution', '1'));
+  await page.selectOption('#resolution', HEAVY_RESOLUTION);
   // Their exact equations (a tolerance draws an approximation: next test).
   await page.fill('#tolerance', '');
   for (const name of ['hyperbolic_paraboloid', 'enneper', 'bicubic_patch']) {
@@ -492,6 +516,8 @@ test('the hyperbolic paraboloid, Enneper\'s surface and a bicubic patch are two-
 test('Enneper\'s surface with a tolerance renders its approximation and shows the bound', async (t) => {
   await page.click('#tab-parametric');
   await setMode('fast');
+  t.after(() => page.selectOption('#resolution', '1'));
+  await page.selectOption('#resolution', HEAVY_RESOLUTION);
   await page.fill('#tolerance', '1e-2');
   let frame = await currentFrame();
   const started = Date.now();
