@@ -147,7 +147,8 @@ Routed Router::route(const Request& request, std::string_view peer) const {
     HandlerResult result = route->handle(request, call);
     if (auto* response = std::get_if<Response>(&result)) return {route->path, finish(request, std::move(*response))};
     if (auto* stream = std::get_if<EventStream>(&result)) return {route->path, finish(request, std::move(*stream))};
-    if (auto* store_call = std::get_if<StoreCall>(&result)) return {route->path, finish(request, std::move(*store_call))};
+    if (auto* store_call = std::get_if<StoreCall>(&result))
+      return {route->path, finish(request, std::move(*store_call))};
     return {route->path, finish(request, route->path, std::get<Computation>(std::move(result)))};
   }
 

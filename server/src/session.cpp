@@ -6,8 +6,8 @@
 #include <boost/asio/post.hpp>
 #include <boost/asio/write.hpp>
 #include <cerrno>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <string_view>
 
@@ -152,14 +152,15 @@ void Session::wait_for_worker_deadline() {
   if (!std::isfinite(left)) return;  // no deadline: the queue's bound is the wait's
   if (!deadline_timer_) deadline_timer_.emplace(stream_.get_executor());
   // Just past the deadline, so that the budget's own check finds it spent.
-  deadline_timer_->expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                     std::chrono::duration<double>(left)) +
-                                 std::chrono::milliseconds(1));
+  deadline_timer_->expires_after(
+      std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(left)) +
+      std::chrono::milliseconds(1));
   deadline_timer_->async_wait(beast::bind_front_handler(&Session::on_worker_deadline, shared_from_this()));
 }
 
 void Session::on_worker_deadline(beast::error_code ec) {
-  if (ec || !computing_) return;  // cancelled: the answer came first
+  // Cancelled (the answer came first), or nothing computes any more.
+  if (ec || !computing_) return;
   if (budget_.seconds_left() > 0) return wait_for_worker_deadline();  // woke early
   std::optional<WorkerPool::Job> job = context_.pool.withdraw(ticket_);
   if (!job) return;  // a worker has it: the budget stops it at its next check

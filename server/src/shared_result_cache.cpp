@@ -11,10 +11,8 @@ namespace {
 std::string cache_key(const std::string& key) { return "implicitizer:cache:" + key; }
 
 void report(const std::string& address, const std::string& what) {
-  std::cerr << "implicitizer-server: shared result cache " + address + ": " + what + "\n"
-            << std::flush;
+  std::cerr << "implicitizer-server: shared result cache " + address + ": " + what + "\n" << std::flush;
 }
-
 
 }  // namespace
 

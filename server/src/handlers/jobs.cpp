@@ -50,9 +50,8 @@ HandlerResult answer_with_store(const HandlerContext& context, Answer answer) {
 }  // namespace
 
 HandlerResult handle_job_submit(const Request& request, const std::string& client, const HandlerContext& context) {
-  return answer_with_store(context, [request, client](JobManager& jobs) -> StoreAnswer {
-    return jobs.submit(request, client);
-  });
+  return answer_with_store(context,
+                           [request, client](JobManager& jobs) -> StoreAnswer { return jobs.submit(request, client); });
 }
 
 HandlerResult handle_job_status(const std::string& id, const HandlerContext& context) {
