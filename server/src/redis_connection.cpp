@@ -1,5 +1,7 @@
 #include "redis_connection.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
 namespace implicitizer::server {
@@ -20,7 +22,7 @@ void RedisConnection::connect() {
     context_.reset();
     throw std::runtime_error("cannot connect to " + address() + ": " + why);
   }
-  const timeval command_timeout{5, 0};
+  const timeval command_timeout{static_cast<time_t>(kCommandTimeout.count()), 0};
   redisSetTimeout(context_.get(), command_timeout);
 }
 
@@ -32,18 +34,30 @@ RedisConnection::Reply RedisConnection::command(const std::vector<std::string>& 
     lengths.push_back(a.size());
   }
   std::lock_guard lock(mutex_);
+  std::string why;
   for (int attempt = 0; attempt < 2; ++attempt) {
     if (!context_) connect();
     Reply reply(static_cast<redisReply*>(
         redisCommandArgv(context_.get(), static_cast<int>(argv.size()), argv.data(), lengths.data())));
     if (!reply) {  // the connection broke: one fresh connection, one more try
+      why = describe_failure(*context_);
       context_.reset();
       continue;
     }
-    if (reply->type == REDIS_REPLY_ERROR) throw std::runtime_error("redis: " + std::string(reply->str, reply->len));
+    if (reply->type == REDIS_REPLY_ERROR) {
+      throw std::runtime_error(address() + ": error reply: " + std::string(reply->str, reply->len));
+    }
     return reply;
   }
-  throw std::runtime_error(address() + " does not answer");
+  throw std::runtime_error(address() + ": " + why);
+}
+
+std::string RedisConnection::describe_failure(const redisContext& context) {
+  // hiredis reports its command timeout as a read that would block.
+  if (context.err == REDIS_ERR_IO && std::strcmp(context.errstr, std::strerror(EAGAIN)) == 0) {
+    return "timeout (no answer within " + std::to_string(kCommandTimeout.count()) + " s, twice)";
+  }
+  return context.errstr;
 }
 
 long long RedisConnection::eval_integer(const std::string& script, const std::vector<std::string>& keys,

@@ -6,6 +6,7 @@
 
 #include <hiredis/hiredis.h>
 
+#include <chrono>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -26,13 +27,19 @@ class RedisConnection {
   /// std::runtime_error when it cannot.
   RedisConnection(std::string host, int port);
 
-  /// Sends `args` (binary-safe) and returns the reply. Throws std::runtime_error for
-  /// a Redis error reply or when the connection cannot be re-established.
+  /// Sends `args` (binary-safe) and returns the reply. Throws std::runtime_error,
+  /// whose message starts with address(), for a Redis error reply or when neither the
+  /// connection nor a fresh one answers (so a blocked call lasts up to twice
+  /// kCommandTimeout).
   Reply command(const std::vector<std::string>& args);
 
   /// EVAL of `script` with `keys` and `args`: the reply's integer (anything else: 0).
   long long eval_integer(const std::string& script, const std::vector<std::string>& keys,
                          const std::vector<std::string>& args);
+
+  /// How long one command may wait for its answer before the connection is
+  /// considered broken (and the command tried once more on a new one).
+  static constexpr std::chrono::seconds kCommandTimeout{5};
 
   /// `redis://HOST:PORT`, for messages.
   std::string address() const { return "redis://" + host_ + ":" + std::to_string(port_); }
@@ -42,6 +49,8 @@ class RedisConnection {
     void operator()(redisContext* context) const { redisFree(context); }
   };
   void connect();  // with mutex_ held
+  // Why a command got no reply: "timeout (...)" or hiredis's error text.
+  static std::string describe_failure(const redisContext& context);
 
   const std::string host_;
   const int port_;

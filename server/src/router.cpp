@@ -147,6 +147,8 @@ Routed Router::route(const Request& request, std::string_view peer) const {
     HandlerResult result = route->handle(request, call);
     if (auto* response = std::get_if<Response>(&result)) return {route->path, finish(request, std::move(*response))};
     if (auto* stream = std::get_if<EventStream>(&result)) return {route->path, finish(request, std::move(*stream))};
+    if (auto* store_call = std::get_if<StoreCall>(&result))
+      return {route->path, finish(request, std::move(*store_call))};
     return {route->path, finish(request, route->path, std::get<Computation>(std::move(result)))};
   }
 
@@ -174,9 +176,9 @@ Routed Router::route(const Request& request, std::string_view peer) const {
   return {"static", finish(request, std::move(response))};
 }
 
-Response Router::make_overloaded_response(const Request& request) const {
+Response Router::make_overloaded_response(const Request& request, std::string_view queue) const {
   Response response = make_error_response(http::status::service_unavailable, "overloaded",
-                                          "the server is busy (computation queue full); retry later");
+                                          "the server is busy (" + std::string(queue) + " queue full); retry later");
   response.set(http::field::retry_after, std::to_string(context_.config.retry_after_seconds));
   return finish(request, std::move(response));
 }
@@ -207,6 +209,16 @@ EventStream Router::finish(const Request& request, EventStream stream) const {
   stream.head.keep_alive(false);
   cors_.apply(header_value(request, http::field::origin), stream.head);
   return stream;
+}
+
+StoreCall Router::finish(const Request& request, StoreCall call) const {
+  // Like a computation's: the header is all finishing needs.
+  call.run = [this, inner = std::move(call.run), head = Request(request.base())]() -> StoreAnswer {
+    StoreAnswer answer = inner();
+    if (auto* response = std::get_if<Response>(&answer)) return finish(head, std::move(*response));
+    return finish(head, std::get<EventStream>(std::move(answer)));
+  };
+  return call;
 }
 
 Computation Router::finish(const Request& request, const std::string& endpoint, Computation computation) const {

@@ -21,7 +21,8 @@ struct Routed {
   std::string endpoint;
   /// A finished response, a computation whose `run` returns a finished response
   /// and never throws (library errors are already mapped to the contract's errors),
-  /// or an event stream whose head is finished.
+  /// an event stream whose head is finished, or a store call whose `run` returns one
+  /// of those finished.
   HandlerResult result;
 };
 
@@ -48,9 +49,9 @@ class Router {
   /// GET/HEAD paths when a static directory is configured.
   Routed route(const Request& request, std::string_view peer = {}) const;
 
-  /// The 503 `overloaded` answer (with Retry-After) when the pool refuses `request`'s
-  /// computation.
-  Response make_overloaded_response(const Request& request) const;
+  /// The 503 `overloaded` answer (with Retry-After) when the `queue` ("computation",
+  /// "job store") refuses `request`'s work.
+  Response make_overloaded_response(const Request& request, std::string_view queue) const;
 
   /// An error the transport found before the request was complete (`request` may
   /// hold only its header): finished, and with keep-alive off since the rest of the
@@ -80,6 +81,7 @@ class Router {
   Response finish(const Request& request, Response response) const;
   EventStream finish(const Request& request, EventStream stream) const;
   Computation finish(const Request& request, const std::string& endpoint, Computation computation) const;
+  StoreCall finish(const Request& request, StoreCall call) const;
 
   HandlerContext context_;
   CorsPolicy cors_;

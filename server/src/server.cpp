@@ -68,9 +68,10 @@ Server::Server(ServerConfig config)
       pool_(config_.effective_worker_threads(), config_.queue_capacity),
       shared_cache_(make_shared_result_cache(config_)),
       jobs_(config_, make_job_store(config_), cache_, metrics_, shared_cache_.get()),
+      store_pool_(kStoreThreads, kStoreQueueCapacity),
       router_(make_handler_context(config_, cache_, metrics_, pool_, jobs_, shared_cache_.get())),
       log_(!config_.quiet),
-      session_context_{config_, router_, pool_, metrics_, log_},
+      session_context_{config_, router_, pool_, store_pool_, metrics_, log_},
       io_(static_cast<int>(config_.io_threads)) {
   listener_ = std::make_shared<Listener>(io_, resolve_endpoint(io_, config_.host, config_.port), session_context_);
   port_ = listener_->local_endpoint().port();
@@ -84,7 +85,10 @@ void Server::stop() {
   if (stopped_) return;
   stopped_ = true;
   listener_->stop();
-  const std::size_t jobs_left = jobs_.stop(kStopAfterCancel - kLastWrites);
+  // Store calls are short unless the store hangs; one that has not answered by then
+  // would use the job manager after it stopped, so it counts as unfinished.
+  const std::size_t store_calls_left = store_pool_.shutdown(kLastWrites, kLastWrites);
+  const std::size_t jobs_left = jobs_.stop(kStopAfterCancel - kLastWrites) + store_calls_left;
   // Workers finish or are cancelled; each posts its answer to its session's strand,
   // which the still-running network threads write.
   const std::size_t unfinished = pool_.shutdown(config_.shutdown_grace, kStopAfterCancel - kLastWrites) + jobs_left;

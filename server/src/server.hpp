@@ -58,6 +58,13 @@ class Server {
   /// their answers to be written.
   static constexpr std::chrono::milliseconds kStopAfterCancel{1000};
 
+  /// Threads that answer the jobs API's store calls, and how many calls may wait
+  /// for them (more: 503 `overloaded`). Two, so that one call stuck on a locked store
+  /// does not make a call that could answer wait behind it at once; few, since the
+  /// stores serialize their calls anyway.
+  static constexpr unsigned kStoreThreads = 2;
+  static constexpr std::size_t kStoreQueueCapacity = 64;
+
  private:
   ServerConfig config_;
   MetricsRegistry metrics_;
@@ -65,6 +72,9 @@ class Server {
   WorkerPool pool_;
   std::unique_ptr<SharedResultCache> shared_cache_;  // null unless --store redis://
   JobManager jobs_;
+  // The jobs API's store calls (StoreCall): off the network threads, apart from the
+  // computations. Declared after jobs_, which its calls use.
+  WorkerPool store_pool_;
   Router router_;
   AccessLog log_;
   SessionContext session_context_;

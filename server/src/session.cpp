@@ -7,6 +7,7 @@
 #include <boost/asio/write.hpp>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <string_view>
 
@@ -121,8 +122,11 @@ void Session::handle(Request request) {
   endpoint_ = std::move(routed.endpoint);
   if (auto* response = std::get_if<Response>(&routed.result)) return send(std::move(*response));
   if (auto* stream = std::get_if<EventStream>(&routed.result)) return stream_events(std::move(*stream));
+  if (auto* call = std::get_if<StoreCall>(&routed.result)) return call_store(request, std::move(*call));
+  compute(request, std::get<Computation>(std::move(routed.result)));
+}
 
-  Computation computation = std::get<Computation>(std::move(routed.result));
+void Session::compute(const Request& request, Computation computation) {
   budget_ = computation.budget;
   // The worker hands the finished response back to this session's strand.
   WorkerPool::Job job{[self = shared_from_this(), run = std::move(computation.run)]() {
@@ -132,12 +136,55 @@ void Session::handle(Request request) {
                         });
                       },
                       computation.budget};
-  if (!context_.pool.try_submit(job)) return send(context_.router.make_overloaded_response(request));
+  const std::optional<WorkerPool::Ticket> ticket = context_.pool.try_submit(job);
+  if (!ticket) return send(context_.router.make_overloaded_response(request, "computation"));
+  ticket_ = *ticket;
   computing_ = true;
   client_gone_ = false;
   // No read timeout while the client waits for its answer; the budget bounds the wait.
   stream_.expires_never();
   watch_for_disconnect();
+  wait_for_worker_deadline();
+}
+
+void Session::wait_for_worker_deadline() {
+  const double left = budget_.seconds_left();
+  if (!std::isfinite(left)) return;  // no deadline: the queue's bound is the wait's
+  if (!deadline_timer_) deadline_timer_.emplace(stream_.get_executor());
+  // Just past the deadline, so that the budget's own check finds it spent.
+  deadline_timer_->expires_after(
+      std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(left)) +
+      std::chrono::milliseconds(1));
+  deadline_timer_->async_wait(beast::bind_front_handler(&Session::on_worker_deadline, shared_from_this()));
+}
+
+void Session::on_worker_deadline(beast::error_code ec) {
+  // Cancelled (the answer came first), or nothing computes any more.
+  if (ec || !computing_) return;
+  if (budget_.seconds_left() > 0) return wait_for_worker_deadline();  // woke early
+  std::optional<WorkerPool::Job> job = context_.pool.withdraw(ticket_);
+  if (!job) return;  // a worker has it: the budget stops it at its next check
+  // Its first step is the budget check that names the wait for a worker: it answers
+  // the 504 at once (and counts it in the metrics) without computing anything.
+  job->run();
+}
+
+void Session::call_store(const Request& request, StoreCall call) {
+  WorkerPool::Job job{[self = shared_from_this(), run = std::move(call.run)]() {
+                        StoreAnswer answer = run();
+                        net::post(self->stream_.get_executor(), [self, answer = std::move(answer)]() mutable {
+                          self->on_store_answered(std::move(answer));
+                        });
+                      },
+                      Budget()};
+  if (!context_.store_pool.try_submit(job)) return send(context_.router.make_overloaded_response(request, "job store"));
+  // The store's own timeouts bound the wait (the client may not time out meanwhile).
+  stream_.expires_never();
+}
+
+void Session::on_store_answered(StoreAnswer answer) {
+  if (auto* response = std::get_if<Response>(&answer)) return send(std::move(*response));
+  stream_events(std::get<EventStream>(std::move(answer)));
 }
 
 void Session::watch_for_disconnect() {
@@ -166,6 +213,7 @@ void Session::on_computed(Response response) {
     log_request(499, 0);
     return do_close();
   }
+  if (deadline_timer_) deadline_timer_->cancel();
   beast::error_code ignored;
   stream_.socket().cancel(ignored);  // ends the disconnect watch
   send(std::move(response));

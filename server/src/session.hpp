@@ -7,7 +7,10 @@
 /// are dropped), header and body limits on every parser (431 / 413), a request cap
 /// per connection, a write timeout. The header is read first, so that a request with
 /// `Expect: 100-continue` gets its interim `100 Continue` (or, when its declared body
-/// is too large, the 413 at once) before the client sends the body. While a computation runs the session waits for
+/// is too large, the 413 at once) before the client sends the body. A computation whose deadline passes while it
+/// waits for a worker is taken back from the pool and answered 504 at its deadline.
+/// A StoreCall runs on the store executor; the session writes when its answer comes
+/// back, as it does for a computation. While a computation runs the session waits for
 /// the socket to become readable: end of stream means the client left, and the
 /// computation's budget is cancelled. An event stream (GET /v1/jobs/{id}/events) is
 /// written piece by piece, polled on a timer on this connection's strand, and ends the
@@ -36,6 +39,7 @@ struct SessionContext {
   const ServerConfig& config;
   const Router& router;
   WorkerPool& pool;
+  WorkerPool& store_pool;  ///< runs StoreCalls (the jobs API's store work)
   MetricsRegistry& metrics;
   AccessLog& log;
 };
@@ -59,6 +63,11 @@ class Session : public std::enable_shared_from_this<Session> {
   void do_read_body();
   void on_read(boost::beast::error_code ec, std::size_t bytes);
   void handle(Request request);
+  void compute(const Request& request, Computation computation);
+  void wait_for_worker_deadline();
+  void on_worker_deadline(boost::beast::error_code ec);
+  void call_store(const Request& request, StoreCall call);
+  void on_store_answered(StoreAnswer answer);
   void watch_for_disconnect();
   void on_readable(boost::beast::error_code ec);
   void on_computed(Response response);
@@ -91,6 +100,10 @@ class Session : public std::enable_shared_from_this<Session> {
   bool computing_ = false;
   bool client_gone_ = false;
   Budget budget_;
+  WorkerPool::Ticket ticket_ = 0;
+  // Fires at the computation's deadline: if it is still queued then, it is withdrawn
+  // and answered 504 at once instead of when a worker frees up.
+  std::optional<boost::asio::steady_timer> deadline_timer_;
 
   // The event stream being written, if any.
   std::optional<EventStream> events_;

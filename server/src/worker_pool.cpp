@@ -21,7 +21,8 @@ struct WorkerPool::State {
   std::mutex mutex;
   std::condition_variable wake;  // a job arrived, or stopping
   std::condition_variable idle;  // a job finished, or a worker exited
-  std::deque<Job> queue;
+  std::deque<std::pair<Ticket, Job>> queue;
+  Ticket last_ticket = 0;
   std::list<Budget> running;  // budgets of running jobs, for cancellation
   std::size_t live_workers = 0;
   bool accepting = true;
@@ -47,19 +48,33 @@ WorkerPool::~WorkerPool() {
   (void)shutdown(std::chrono::milliseconds(0), stopped ? std::chrono::milliseconds(0) : kDestructorStopWait);
 }
 
-bool WorkerPool::try_submit(Job& job) {
+std::optional<WorkerPool::Ticket> WorkerPool::try_submit(Job& job) {
+  Ticket ticket = 0;
   {
     std::lock_guard lock(state_->mutex);
     // The bound counts jobs beyond those the workers can run at once, so with
     // capacity 0 the pool still takes one job per idle worker.
     if (!state_->accepting || state_->queue.size() + state_->running.size() >= threads_.size() + capacity_) {
       ++state_->rejected;
-      return false;
+      return std::nullopt;
     }
-    state_->queue.push_back(std::move(job));
+    ticket = ++state_->last_ticket;
+    state_->queue.emplace_back(ticket, std::move(job));
   }
   state_->wake.notify_one();
-  return true;
+  return ticket;
+}
+
+std::optional<WorkerPool::Job> WorkerPool::withdraw(Ticket ticket) {
+  std::lock_guard lock(state_->mutex);
+  auto& queue = state_->queue;
+  const auto it = std::find_if(queue.begin(), queue.end(), [ticket](const auto& q) { return q.first == ticket; });
+  if (it == queue.end()) return std::nullopt;
+  Job job = std::move(it->second);
+  queue.erase(it);
+  // Shutdown may be waiting for the queue to empty.
+  state_->idle.notify_all();
+  return job;
 }
 
 void WorkerPool::work(State& state) {
@@ -74,7 +89,7 @@ void WorkerPool::work(State& state) {
         state.idle.notify_all();
         return;
       }
-      job = std::move(state.queue.front());
+      job = std::move(state.queue.front().second);
       state.queue.pop_front();
       state.running.push_front(job.budget);
       mine = state.running.begin();
@@ -104,7 +119,7 @@ std::size_t WorkerPool::shutdown(std::chrono::milliseconds grace, std::chrono::m
   s.accepting = false;
   if (!s.stopping) s.idle.wait_for(lock, grace, [&s] { return s.queue.empty() && s.running.empty(); });
   // Whatever is left runs to its first budget check and answers `cancelled`.
-  for (const Job& job : s.queue) job.budget.cancel();
+  for (const auto& queued : s.queue) queued.second.budget.cancel();
   for (const Budget& budget : s.running) budget.cancel();
   s.stopping = true;
   s.wake.notify_all();

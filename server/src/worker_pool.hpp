@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -43,11 +44,20 @@ class WorkerPool {
   /// How long the destructor waits for cancelled jobs to stop.
   static constexpr std::chrono::milliseconds kDestructorStopWait{1000};
 
-  /// Queues `job`; false (and `job` untouched) when the pool holds `threads +
-  /// queue_capacity` jobs (running or waiting) or is shutting down. A job accepted
-  /// here always runs, even if cancelled meanwhile: its `run` sees the cancelled
-  /// budget and answers accordingly.
-  bool try_submit(Job& job);
+  /// Names a queued job for withdraw(); never 0.
+  using Ticket = std::uint64_t;
+
+  /// Queues `job` and returns its ticket; nullopt (and `job` untouched) when the pool
+  /// holds `threads + queue_capacity` jobs (running or waiting) or is shutting down.
+  /// A job accepted here runs unless withdrawn, even if cancelled meanwhile: its
+  /// `run` sees the cancelled budget and answers accordingly.
+  std::optional<Ticket> try_submit(Job& job);
+
+  /// Takes back the job `ticket` if no worker has started it: it will never run, and
+  /// its slot is free at once. Nullopt when it has started (or finished): its budget
+  /// is the only way to stop it then. Lets a caller answer a job whose deadline
+  /// passed in the queue without waiting for a worker to reach it.
+  std::optional<Job> withdraw(Ticket ticket);
 
   /// Stops accepting jobs, lets queued and running ones finish for up to `grace`,
   /// then cancels the budgets of all that remain and waits up to `stop_wait` for the

@@ -10,47 +10,18 @@ Exits 77 (skipped) when no redis-server is given. Registered as server.jobs_redi
 import json
 import os
 import signal
-import socket
 import subprocess
 import sys
-import tempfile
 import time
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from server_harness import Checks, Server, run_tests  # noqa: E402
+from server_harness import Checks, Redis, Server, run_tests  # noqa: E402
 from jobs_test import FINISH_DEADLINE_S, LONG, MEDIUM, SMALL, cpu_ticks, finished, job, submit, wait_for  # noqa: E402
 
 CHECKS = Checks()
 check = CHECKS.check
 LEASE_S = 2
-
-
-class Redis:
-    """A redis-server on a free loopback port, no persistence, in a temporary directory."""
-
-    def __init__(self, binary):
-        self.dir = tempfile.mkdtemp(prefix="implicitizer-redis-")
-        with socket.socket() as s:
-            s.bind(("127.0.0.1", 0))
-            self.port = s.getsockname()[1]
-        self.proc = subprocess.Popen([binary, "--port", str(self.port), "--bind", "127.0.0.1", "--save", "",
-                                      "--appendonly", "no", "--dir", self.dir],
-                                     stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        end = time.monotonic() + 30
-        while time.monotonic() < end:
-            try:
-                with socket.create_connection(("127.0.0.1", self.port), timeout=1) as c:
-                    c.sendall(b"PING\r\n")
-                    if c.recv(16).startswith(b"+PONG"):
-                        return
-            except OSError:
-                time.sleep(0.05)
-        raise RuntimeError("redis-server did not answer on port %d" % self.port)
-
-    def close(self):
-        self.proc.terminate()
-        self.proc.wait(30)
 
 
 def replica(binary, redis):

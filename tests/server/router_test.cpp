@@ -216,7 +216,7 @@ TEST_F(RouterWithOriginListTest, OnlyListedOriginsAreAllowed) {
 }
 
 TEST_F(RouterTest, OverloadIs503WithRetryAfter) {
-  const Response response = router_.make_overloaded_response(post("/v1/implicitize", "{}"));
+  const Response response = router_.make_overloaded_response(post("/v1/implicitize", "{}"), "computation");
   EXPECT_EQ(response.result(), http::status::service_unavailable);
   EXPECT_EQ(response[http::field::retry_after], "1");
   EXPECT_NE(response.body().find(R"("code":"overloaded")"), std::string::npos);
@@ -286,10 +286,21 @@ class RouterJobsTest : public RouterTest {
 
   JobManager jobs_{config_, std::make_unique<MemoryJobStore>(), cache_, metrics_};
   Router jobs_router_{HandlerContext{config_, cache_, metrics_, {}, &jobs_}};
-  Response answer(const Request& request) {
+  // Routes `request` and runs its store call inline: every jobs route must hand its
+  // store work to the store executor, never answer on the network thread.
+  StoreAnswer call_store(const Request& request) {
     Routed routed = jobs_router_.route(request, "192.0.2.1");
-    if (auto* response = std::get_if<Response>(&routed.result)) return std::move(*response);
-    return Response(http::status::internal_server_error, 11);  // no computation or stream expected here
+    auto* call = std::get_if<StoreCall>(&routed.result);
+    if (call == nullptr) {
+      ADD_FAILURE() << request.target() << " answered without a store call";
+      return Response(http::status::internal_server_error, 11);
+    }
+    return call->run();
+  }
+  Response answer(const Request& request) {
+    StoreAnswer answered = call_store(request);
+    if (auto* response = std::get_if<Response>(&answered)) return std::move(*response);
+    return Response(http::status::internal_server_error, 11);  // no stream expected here
   }
 };
 
@@ -308,8 +319,8 @@ TEST_F(RouterJobsTest, EventsAreAStream) {
   const std::string id =
       submit(R"({"kind": "resultant", "request": {"polynomials": ["x-t", "y-t^2"], "variable": "t"}})");
   wait_for(id, R"("status":"done")");
-  Routed routed = jobs_router_.route(get("/v1/jobs/" + id + "/events"), "192.0.2.1");
-  auto* stream = std::get_if<EventStream>(&routed.result);
+  StoreAnswer answered = call_store(get("/v1/jobs/" + id + "/events"));
+  auto* stream = std::get_if<EventStream>(&answered);
   ASSERT_NE(stream, nullptr);
   EXPECT_EQ(stream->head[http::field::content_type], "text/event-stream");
   EXPECT_FALSE(stream->head.keep_alive()) << "the stream's body ends with the connection";

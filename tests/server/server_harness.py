@@ -150,6 +150,35 @@ class Server:
         return total
 
 
+class Redis:
+    """A redis-server on a free loopback port, no persistence, in a temporary directory
+    (jobs_redis_test.py, slow_store_test.py)."""
+
+    def __init__(self, binary):
+        self.dir = tempfile.mkdtemp(prefix="implicitizer-redis-")
+        with socket.socket() as s:
+            s.bind(("127.0.0.1", 0))
+            self.port = s.getsockname()[1]
+        self.proc = subprocess.Popen([binary, "--port", str(self.port), "--bind", "127.0.0.1", "--save", "",
+                                      "--appendonly", "no", "--dir", self.dir],
+                                     stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        end = time.monotonic() + 30
+        while time.monotonic() < end:
+            try:
+                with socket.create_connection(("127.0.0.1", self.port), timeout=1) as c:
+                    c.sendall(b"PING\r\n")
+                    if c.recv(16).startswith(b"+PONG"):
+                        return
+            except OSError:
+                time.sleep(0.05)
+        raise RuntimeError("redis-server did not answer on port %d" % self.port)
+
+    def close(self):
+        self.proc.send_signal(signal.SIGCONT)  # a test may have stopped it
+        self.proc.terminate()
+        self.proc.wait(30)
+
+
 def decode_png(data):
     """(width, height, rows) of an 8-bit RGB, non-interlaced PNG, each row `3 * width`
     bytes, after checking the signature, every chunk's CRC and undoing the filters."""

@@ -41,6 +41,37 @@ TEST(WorkerPool, RunsEveryAcceptedJob) {
   EXPECT_EQ(count.load(), 50);
 }
 
+TEST(WorkerPool, WithdrawTakesBackAQueuedJobOnly) {
+  std::promise<void> release;
+  std::shared_future<void> gate = release.get_future().share();
+  std::atomic<int> done{0};
+  std::atomic<int> cancelled{0};
+  WorkerPool pool(1, 1);
+  WorkerPool::Job first = blocking_job(gate, done, cancelled);
+  const std::optional<WorkerPool::Ticket> running = pool.try_submit(first);
+  ASSERT_TRUE(running);
+  // Polled for up to a minute: a loaded machine may start the worker late.
+  for (int i = 0; i < 12000 && pool.busy() != 1; ++i) std::this_thread::sleep_for(5ms);
+  ASSERT_EQ(pool.busy(), 1u);
+  std::atomic<int> second_ran{0};
+  WorkerPool::Job second{[&second_ran] { ++second_ran; }, Budget()};
+  const std::optional<WorkerPool::Ticket> queued = pool.try_submit(second);
+  ASSERT_TRUE(queued);
+  EXPECT_NE(*queued, *running);
+  EXPECT_FALSE(pool.withdraw(*running)) << "a started job is stopped by its budget, not taken back";
+  std::optional<WorkerPool::Job> back = pool.withdraw(*queued);
+  ASSERT_TRUE(back);
+  EXPECT_TRUE(static_cast<bool>(back->run));
+  EXPECT_EQ(pool.queued(), 0u);
+  EXPECT_FALSE(pool.withdraw(*queued)) << "taken back once";
+  WorkerPool::Job third{[] {}, Budget()};
+  EXPECT_TRUE(pool.try_submit(third)) << "the withdrawn job's slot is free";
+  release.set_value();
+  EXPECT_EQ(pool.shutdown(60s, 5s), 0u);
+  EXPECT_EQ(second_ran.load(), 0) << "a withdrawn job never runs";
+  EXPECT_EQ(done.load(), 1);
+}
+
 TEST(WorkerPool, RefusesBeyondThreadsPlusQueueCapacity) {
   std::promise<void> release;
   std::shared_future<void> gate = release.get_future().share();

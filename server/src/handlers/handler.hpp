@@ -44,8 +44,20 @@ struct EventStream {
   std::function<std::pair<std::string, bool>()> next;
 };
 
-/// A handler's answer: a response now, a computation for the pool, or a stream.
-using HandlerResult = std::variant<Response, Computation, EventStream>;
+/// What a StoreCall answers: a response, or a stream to start.
+using StoreAnswer = std::variant<Response, EventStream>;
+
+/// Work that waits on the job store (a SQLite file another process has locked, a
+/// Redis that is slow): run on the session's store executor, never on a network
+/// thread, so that one slow store cannot hold up /healthz or another connection.
+/// `run` must not throw (a store that cannot answer is a 503 it returns).
+struct StoreCall {
+  std::function<StoreAnswer()> run;
+};
+
+/// A handler's answer: a response now, a computation for the pool, a stream, or a
+/// call into the job store.
+using HandlerResult = std::variant<Response, Computation, EventStream, StoreCall>;
 
 class JobManager;
 
@@ -116,7 +128,8 @@ HandlerResult handle_decoded(const Request& request, const HandlerContext& conte
 
 /// The shape every cached algebra endpoint shares: the cached body for `key` if there
 /// is one (`X-Cache: hit`), else a Computation that, on a worker, looks in the shared
-/// cache (a hit there is `X-Cache: hit` too, and is kept in this replica's cache), else
+/// cache (waiting no longer than the request's deadline; a hit there is `X-Cache: hit`
+/// too, and is kept in this replica's cache), else
 /// runs `answer(decoded, budget)` under a budget for the request's timeout, caches the
 /// body it returns in both and answers it (`X-Cache: miss`). `answer` returns the
 /// encoded JSON body.
@@ -135,7 +148,7 @@ HandlerResult cached_computation(Request decoded, std::string key, const Handler
   computation.run = [decoded = std::move(decoded), key = std::move(key), budget = computation.budget,
                      cache = &context.cache, shared = context.shared_cache, answer = std::move(answer)]() {
     std::optional<std::string> body;
-    if (shared != nullptr) body = shared->find(key);
+    if (shared != nullptr) body = shared->find(key, budget);
     const bool hit = body.has_value();
     if (!hit) {
       body = answer(decoded, budget);

@@ -2,7 +2,9 @@
 /// \file
 /// The jobs API: POST /v1/jobs, GET and DELETE /v1/jobs/{id}, GET /v1/jobs/{id}/result
 /// and GET /v1/jobs/{id}/events. Thin: the JobManager decides, these only translate
-/// (and answer 503 `job_store_unavailable` when the store cannot answer).
+/// (and answer 503 `job_store_unavailable`, naming the store, when it cannot answer).
+/// Each returns a StoreCall (or 404 when the server runs no jobs): the store is never
+/// waited for on a network thread.
 
 #include <string>
 
