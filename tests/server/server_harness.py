@@ -173,6 +173,20 @@ class Redis:
                 time.sleep(0.05)
         raise RuntimeError("redis-server did not answer on port %d" % self.port)
 
+    def count_keys(self, pattern):
+        """How many keys match `pattern` (KEYS: fine on a test's small database)."""
+        with socket.create_connection(("127.0.0.1", self.port), timeout=30) as c:
+            c.sendall(b"*2\r\n$4\r\nKEYS\r\n$%d\r\n%s\r\n" % (len(pattern), pattern.encode()))
+            reply = b""
+            while b"\r\n" not in reply:
+                chunk = c.recv(4096)
+                if not chunk:
+                    break
+                reply += chunk
+        if not reply.startswith(b"*"):
+            raise RuntimeError("KEYS answered %r" % reply[:100])
+        return int(reply[1:reply.index(b"\r\n")])
+
     def close(self):
         self.proc.send_signal(signal.SIGCONT)  # a test may have stopped it
         self.proc.terminate()
