@@ -263,7 +263,19 @@ void Session::wait_for_event() {
 
 void Session::on_event_due(beast::error_code ec) {
   if (ec) return;  // the timer was cancelled: the session is going away
-  auto [piece, last] = events_->next();
+  // The feed reads the job store: on the store executor, like every store call.
+  WorkerPool::Job job{[self = shared_from_this(), next = events_->next]() {
+                        std::pair<std::string, bool> event = next();
+                        net::post(self->stream_.get_executor(), [self, event = std::move(event)]() mutable {
+                          self->on_event_read(std::move(event.first), event.second);
+                        });
+                      },
+                      Budget()};
+  // A full store queue: this listener asks again at its next interval.
+  if (!context_.store_pool.try_submit(job)) return wait_for_event();
+}
+
+void Session::on_event_read(std::string piece, bool last) {
   if (piece.empty() && !last) return wait_for_event();
   event_ = std::move(piece);
   last_event_ = last;

@@ -13,8 +13,8 @@
 /// back, as it does for a computation. While a computation runs the session waits for
 /// the socket to become readable: end of stream means the client left, and the
 /// computation's budget is cancelled. An event stream (GET /v1/jobs/{id}/events) is
-/// written piece by piece, polled on a timer on this connection's strand, and ends the
-/// connection.
+/// written piece by piece, polled on a timer on this connection's strand (each poll
+/// read on the store executor), and ends the connection.
 
 #include <array>
 #include <boost/asio/ip/tcp.hpp>
@@ -77,6 +77,7 @@ class Session : public std::enable_shared_from_this<Session> {
   void on_events_head_written(boost::beast::error_code ec, std::size_t bytes);
   void wait_for_event();
   void on_event_due(boost::beast::error_code ec);
+  void on_event_read(std::string piece, bool last);
   void on_event_written(boost::beast::error_code ec, std::size_t bytes);
   void reject(http::status status, std::string_view code, std::string_view message);
   void do_close();

@@ -36,7 +36,8 @@ struct Computation {
 /// A response written as it is produced (Server-Sent Events): `head` first (status
 /// and headers, no length: the body ends when the connection closes), then, every
 /// `interval`, whatever `next()` returns, until it says that was the last piece.
-/// `next` runs on the connection's network thread: it must be quick.
+/// `next` runs on the store executor (it may read the job store), one call at a time
+/// for a stream, the next `interval` after the last one's piece was written.
 struct EventStream {
   Response head;
   std::chrono::milliseconds interval{250};
