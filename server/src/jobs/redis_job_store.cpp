@@ -46,10 +46,11 @@ while true do
 end)";
 
 // Lua shared by the scripts that end a job: moves `id` (hash `key`) from the list
-// `from` to the finished set as `status` at `at`, and out of its client's set.
+// `from` to the finished set as `status` at `at`, and out of its client's set; drops
+// its request (a result never needs it again).
 const std::string kSettle = R"(
 local function settle(prefix, key, id, from, finished, status, at)
-  redis.call('HSET', key, 'status', status, 'finished_at_ms', at)
+  redis.call('HSET', key, 'status', status, 'finished_at_ms', at, 'request', '')
   redis.call('LREM', from, 0, id)
   redis.call('SREM', prefix .. 'client:' .. redis.call('HGET', key, 'client'), id)
   redis.call('ZADD', finished, at, id)
@@ -178,7 +179,7 @@ JobRecord job_of(const std::string& id, const std::map<std::string, std::string>
 RedisJobStore::RedisJobStore(std::string host, int port, std::chrono::milliseconds lease)
     : lease_ms_(lease.count()), redis_(std::move(host), port) {}
 
-bool RedisJobStore::insert(const JobRecord& job, std::size_t max_unfinished) {
+JobAdmission RedisJobStore::insert(const JobRecord& job, std::size_t max_unfinished) {
   const bool queued = job.status == JobStatus::queued;
   std::vector<std::string> args{kPrefix,
                                 job.id,
@@ -189,7 +190,7 @@ bool RedisJobStore::insert(const JobRecord& job, std::size_t max_unfinished) {
                                 "kind",
                                 job.kind,
                                 "request",
-                                job.request,
+                                queued ? job.request : std::string(),
                                 "client",
                                 job.client,
                                 "status",
@@ -206,7 +207,8 @@ bool RedisJobStore::insert(const JobRecord& job, std::size_t max_unfinished) {
         "headers",     join_headers(job.result->headers),       "body",         job.result->body};
     args.insert(args.end(), result.begin(), result.end());
   }
-  return redis_.eval_integer(kInsert, {kQueue, kFinished}, args) == 1;
+  return redis_.eval_integer(kInsert, {kQueue, kFinished}, args) == 1 ? JobAdmission::admitted
+                                                                       : JobAdmission::client_job_cap;
 }
 
 std::optional<JobRecord> RedisJobStore::find(const std::string& id) {

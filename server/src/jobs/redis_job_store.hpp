@@ -30,7 +30,7 @@ class RedisJobStore : public JobStore {
   /// Redis cannot be reached.
   RedisJobStore(std::string host, int port, std::chrono::milliseconds lease);
 
-  bool insert(const JobRecord& job, std::size_t max_unfinished) override;
+  JobAdmission insert(const JobRecord& job, std::size_t max_unfinished) override;
   std::optional<JobRecord> find(const std::string& id) override;
   std::optional<JobRecord> claim_next(std::int64_t now_ms) override;
   bool finish(const std::string& id, JobStatus status, const std::optional<JobResult>& result,

@@ -3,12 +3,18 @@
 /// Jobs in one SQLite file (`--store sqlite:PATH`): finished results survive a
 /// restart, and jobs that were queued or running when the process ended (a crash, a
 /// kill -9, a shutdown) are queued again when the next process opens the file. One
-/// process per file: SQLite's locking keeps the file sound, but two servers would
-/// each requeue the other's running jobs (several replicas need a shared store).
+/// process per file: requeueing at open is only sound when no other process runs
+/// those jobs, so the store holds an exclusive lock (flock) on `PATH.lock` for its
+/// life and a second store on the same file refuses to open (several replicas need
+/// a shared store). The file is watched: deleted or replaced under the server (a
+/// different inode), or corrupt, every operation fails (the handlers' 503
+/// job_store_unavailable) instead of writing jobs nobody will find.
 
 #include <sqlite3.h>
+#include <sys/types.h>
 
 #include <mutex>
+#include <vector>
 
 #include "jobs/job_store.hpp"
 
@@ -17,10 +23,11 @@ namespace implicitizer::server {
 /// A JobStore over one SQLite connection, serialized by a mutex.
 class SqliteJobStore : public JobStore {
  public:
-  /// Opens (creating if needed) the database at `path` and queues again the jobs a
-  /// previous process left running. Throws std::runtime_error when the file cannot
-  /// be opened or is not a jobs database.
-  explicit SqliteJobStore(const std::string& path);
+  /// Opens (creating if needed) the database at `path`, takes its lock and queues
+  /// again the jobs a previous process left running; holds within `limits`. Throws
+  /// std::runtime_error when the file cannot be opened, is not a jobs database, or
+  /// another process holds it (the message names the file and that process).
+  explicit SqliteJobStore(const std::string& path, JobStorageLimits limits = {});
   ~SqliteJobStore() override;
   SqliteJobStore(const SqliteJobStore&) = delete;
   SqliteJobStore& operator=(const SqliteJobStore&) = delete;
@@ -28,7 +35,7 @@ class SqliteJobStore : public JobStore {
   /// Jobs queued again at opening (they were running when the last process ended).
   std::size_t requeued_at_open() const { return requeued_at_open_; }
 
-  bool insert(const JobRecord& job, std::size_t max_unfinished) override;
+  JobAdmission insert(const JobRecord& job, std::size_t max_unfinished) override;
   std::optional<JobRecord> find(const std::string& id) override;
   std::optional<JobRecord> claim_next(std::int64_t now_ms) override;
   bool finish(const std::string& id, JobStatus status, const std::optional<JobResult>& result,
@@ -41,11 +48,30 @@ class SqliteJobStore : public JobStore {
 
  private:
   class Statement;
+  class Transaction;
+  struct FileIdentity {
+    std::string path;
+    dev_t device = 0;
+    ino_t inode = 0;
+  };
   void execute(const char* sql);
   std::size_t count_unfinished_locked(const std::string& client);
+  // Unfinished bytes of `client` (of everyone when empty).
+  std::int64_t unfinished_bytes(const std::string& client);
+  void evict_over_limits(const std::string& client, const std::string& keep);
+  // Steps `update` (an UPDATE of job `id` ... RETURNING client) and evicts what its
+  // change calls for; false when it changed no row.
+  bool settle_and_evict(Statement& update, const std::string& id);
+  // Throws when the database file or its WAL is no longer the one opened.
+  void check_files();
 
+  const std::string path_;
+  const JobStorageLimits limits_;
   std::mutex mutex_;
+  int lock_fd_ = -1;
   sqlite3* db_ = nullptr;
+  std::vector<FileIdentity> files_;
+  bool reported_missing_ = false;
   std::size_t requeued_at_open_ = 0;
 };
 
