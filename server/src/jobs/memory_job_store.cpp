@@ -40,7 +40,7 @@ JobAdmission MemoryJobStore::insert(const JobRecord& job, std::size_t max_unfini
   }
   Entry& entry = jobs_[job.id];
   entry.job = job;
-  if (is_finished(job.status)) entry.job.request.clear();
+  if (is_finished(job.status)) std::string().swap(entry.job.request);
   entry.order = next_order_++;
   evict_over_limits(job.client, job.id);
   return JobAdmission::admitted;
@@ -107,7 +107,7 @@ bool MemoryJobStore::finish(const std::string& id, JobStatus status, const std::
   job.status = status;
   job.result = result;
   job.finished_at_ms = finished_at_ms;
-  job.request = std::string();  // gives its memory back, which clear() would not
+  std::string().swap(job.request);  // frees its buffer, which clear() and assigning "" keep
   evict_over_limits(job.client, id);
   return true;
 }
@@ -119,7 +119,7 @@ bool MemoryJobStore::cancel_queued(const std::string& id, std::int64_t finished_
   JobRecord& job = it->second.job;
   job.status = JobStatus::cancelled;
   job.finished_at_ms = finished_at_ms;
-  job.request = std::string();
+  std::string().swap(job.request);
   evict_over_limits(job.client, id);
   return true;
 }
