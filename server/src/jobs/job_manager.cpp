@@ -83,8 +83,8 @@ std::unique_ptr<JobStore> make_job_store(const ServerConfig& config) {
   if (config.store.rfind("sqlite:", 0) == 0) return std::make_unique<SqliteJobStore>(config.store.substr(7), limits);
   if (config.store.rfind("redis://", 0) == 0) {
     const auto [host, port] = parse_redis_address(config.store);
-    return std::make_unique<RedisJobStore>(host, port,
-                                           std::chrono::duration_cast<std::chrono::milliseconds>(config.job_lease));
+    return std::make_unique<RedisJobStore>(
+        host, port, std::chrono::duration_cast<std::chrono::milliseconds>(config.job_lease), limits);
   }
   return std::make_unique<MemoryJobStore>(limits);
 }
