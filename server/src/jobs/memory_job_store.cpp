@@ -66,12 +66,19 @@ void MemoryJobStore::evict_within(const std::string* client, const std::string& 
       finished.push_back(&entry);
     }
   }
+  std::size_t finished_bytes = 0;
+  for (const Entry* entry : finished) finished_bytes += job_stored_bytes(entry->job);
+  if (budget_after(max_bytes, held) >= static_cast<long long>(finished_bytes) &&
+      budget_after(max_finished, kept_finished) >= static_cast<long long>(finished.size())) {
+    return;  // within both caps: nothing to order
+  }
   std::sort(finished.begin(), finished.end(), [](const Entry* a, const Entry* b) {
     return std::tie(a->job.finished_at_ms, a->order) > std::tie(b->job.finished_at_ms, b->order);
   });
   std::vector<std::size_t> bytes;
   for (const Entry* entry : finished) bytes.push_back(job_stored_bytes(entry->job));
-  const std::size_t first = first_evicted(bytes, budget_after(max_bytes, held), budget_after(max_finished, kept_finished));
+  const std::size_t first =
+      first_evicted(bytes, budget_after(max_bytes, held), budget_after(max_finished, kept_finished));
   std::vector<std::string> evicted;
   for (std::size_t i = first; i < finished.size(); ++i) evicted.push_back(finished[i]->job.id);
   for (const std::string& id : evicted) jobs_.erase(id);

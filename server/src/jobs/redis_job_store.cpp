@@ -240,8 +240,8 @@ RedisJobStore::RedisJobStore(std::string host, int port, std::chrono::millisecon
     : lease_ms_(lease.count()), limits_(limits), redis_(std::move(host), port) {}
 
 std::vector<std::string> RedisJobStore::append_limits(std::vector<std::string> args) const {
-  for (const std::size_t cap : {limits_.max_finished_per_client, limits_.max_bytes_per_client, limits_.max_finished,
-                                limits_.max_bytes}) {
+  for (const std::size_t cap :
+       {limits_.max_finished_per_client, limits_.max_bytes_per_client, limits_.max_finished, limits_.max_bytes}) {
     args.push_back(std::to_string(cap));
   }
   return args;
@@ -378,8 +378,8 @@ bool RedisJobStore::heartbeat(const std::string& id, const JobProgressView& prog
 }
 
 std::size_t RedisJobStore::requeue_expired(std::int64_t now_ms) {
-  return static_cast<std::size_t>(
-      redis_.eval_integer(kRequeueExpired, {kRunning, kQueue, kFinished}, append_limits({kPrefix, std::to_string(now_ms)})));
+  return static_cast<std::size_t>(redis_.eval_integer(kRequeueExpired, {kRunning, kQueue, kFinished},
+                                                      append_limits({kPrefix, std::to_string(now_ms)})));
 }
 
 }  // namespace implicitizer::server

@@ -287,7 +287,10 @@ JobAdmission SqliteJobStore::insert(const JobRecord& job, std::size_t max_unfini
     if (budget_after(limits_.max_bytes, unfinished_bytes("")) < bytes) return JobAdmission::store_bytes_cap;
   }
   Statement s(db_, std::string("INSERT INTO jobs (") + kColumns + ") VALUES (?,?,?,?,?,?,?,?,?,?,?,?)");
-  s.bind(1, job.id).bind(2, job.kind).bind(3, is_finished(job.status) ? std::string() : job.request).bind(4, job.client);
+  s.bind(1, job.id)
+      .bind(2, job.kind)
+      .bind(3, is_finished(job.status) ? std::string() : job.request)
+      .bind(4, job.client);
   s.bind(5, std::string(to_string(job.status))).bind(6, job.created_at_ms).bind(7, job.started_at_ms);
   s.bind(8, job.finished_at_ms);
   if (job.result) {
