@@ -255,6 +255,21 @@ TEST_F(SqliteFileTest, AReplacedFileIsNoticedToo) {
   EXPECT_THROW(store.find("a"), std::runtime_error);
 }
 
+TEST_F(SqliteFileTest, AFileOverwrittenInPlaceIsNoticed) {
+  SqliteJobStore store(path_);
+  ASSERT_EQ(store.insert(make_job("a", "peer"), 16), JobAdmission::admitted);
+  ASSERT_TRUE(store.find("a"));
+  {
+    std::FILE* f = std::fopen(path_.c_str(), "r+b");  // same inode, other bytes
+    ASSERT_TRUE(f);
+    const std::string garbage(4096, 'x');
+    std::fwrite(garbage.data(), 1, garbage.size(), f);
+    std::fclose(f);
+  }
+  EXPECT_THROW(store.find("a"), std::runtime_error);
+  EXPECT_THROW(store.insert(make_job("b", "peer"), 16), std::runtime_error);
+}
+
 TEST_F(SqliteFileTest, AFileThatIsNotADatabaseIsRefusedAtOpen) {
   {
     std::FILE* f = std::fopen(path_.c_str(), "wb");

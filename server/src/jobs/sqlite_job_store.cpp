@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <iostream>
 #include <limits>
 #include <stdexcept>
@@ -183,6 +184,7 @@ SqliteJobStore::SqliteJobStore(const std::string& path, JobStorageLimits limits)
     Statement requeue(db_, "UPDATE jobs SET status = 'queued' WHERE status = 'running'");
     requeue.step();
     requeued_at_open_ = requeue.changes();
+    header_at_open_ = has_sqlite_header();
     for (const char* suffix : {"", "-wal", "-shm"}) {
       struct stat st {};
       const std::string file = path + suffix;
@@ -206,15 +208,36 @@ void SqliteJobStore::check_files() {
     if (::stat(file.path.c_str(), &st) == 0 && st.st_dev == file.device && st.st_ino == file.inode) continue;
     // SQLite would go on writing to the unlinked inode: every job written from now on
     // would be lost at the next start. Refuse instead, and say so once in the log.
-    const std::string message = "the job store's file '" + file.path +
-                                "' was deleted or replaced while the server ran; its jobs are lost to the next "
-                                "start, so the store refuses to work (restart the server)";
-    if (!reported_missing_) {
-      reported_missing_ = true;
-      std::cerr << "implicitizer-server: " + message + "\n" << std::flush;
-    }
-    throw std::runtime_error(message);
+    refuse_to_work("the job store's file '" + file.path +
+                   "' was deleted or replaced while the server ran; its jobs are lost to the next start, so the "
+                   "store refuses to work (restart the server)");
   }
+  if (header_at_open_ && !has_sqlite_header()) {
+    // Overwritten in place (same inode), the file goes unnoticed by SQLite as long as
+    // its cache holds the pages; its first bytes are the cheap witness.
+    refuse_to_work("the job store's file '" + path_ +
+                   "' no longer starts with SQLite's header: it was overwritten or truncated while the server ran, "
+                   "so the store refuses to work (restore it, or restart on a new file)");
+  }
+}
+
+void SqliteJobStore::refuse_to_work(const std::string& message) {
+  if (!reported_file_) {
+    reported_file_ = true;
+    std::cerr << "implicitizer-server: " + message + "\n" << std::flush;
+  }
+  throw std::runtime_error(message);
+}
+
+bool SqliteJobStore::has_sqlite_header() const {
+  // SQLite's own magic string, the first 16 bytes of every database file.
+  static constexpr char kMagic[] = "SQLite format 3";
+  char header[sizeof kMagic] = {};
+  const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const ssize_t n = ::pread(fd, header, sizeof header, 0);
+  ::close(fd);
+  return n == static_cast<ssize_t>(sizeof header) && std::equal(header, header + sizeof header, kMagic);
 }
 
 void SqliteJobStore::execute(const char* sql) {

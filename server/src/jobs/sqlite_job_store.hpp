@@ -7,8 +7,9 @@
 /// those jobs, so the store holds an exclusive lock (flock) on `PATH.lock` for its
 /// life and a second store on the same file refuses to open (several replicas need
 /// a shared store). The file is watched: deleted or replaced under the server (a
-/// different inode), or corrupt, every operation fails (the handlers' 503
-/// job_store_unavailable) instead of writing jobs nobody will find.
+/// different inode), its header overwritten, or corrupt (SQLite's errors), every
+/// operation fails (the handlers' 503 job_store_unavailable) instead of writing jobs
+/// nobody will find.
 
 #include <sqlite3.h>
 #include <sys/types.h>
@@ -62,8 +63,12 @@ class SqliteJobStore : public JobStore {
   // Steps `update` (an UPDATE of job `id` ... RETURNING client) and evicts what its
   // change calls for; false when it changed no row.
   bool settle_and_evict(Statement& update, const std::string& id);
-  // Throws when the database file or its WAL is no longer the one opened.
+  // Throws when the database file or its WAL is no longer the one opened, or the
+  // file no longer starts with SQLite's header.
   void check_files();
+  bool has_sqlite_header() const;
+  // Throws `message`, and logs it the first time.
+  [[noreturn]] void refuse_to_work(const std::string& message);
 
   const std::string path_;
   const JobStorageLimits limits_;
@@ -71,7 +76,8 @@ class SqliteJobStore : public JobStore {
   int lock_fd_ = -1;
   sqlite3* db_ = nullptr;
   std::vector<FileIdentity> files_;
-  bool reported_missing_ = false;
+  bool reported_file_ = false;
+  bool header_at_open_ = false;  // a database in WAL mode has its header once created
   std::size_t requeued_at_open_ = 0;
 };
 
