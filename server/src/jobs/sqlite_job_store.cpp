@@ -30,7 +30,9 @@ constexpr const char* kSchema =
     " id TEXT PRIMARY KEY, kind TEXT NOT NULL, request TEXT NOT NULL, client TEXT NOT NULL,"
     " status TEXT NOT NULL, created_at_ms INTEGER NOT NULL, started_at_ms INTEGER NOT NULL,"
     " finished_at_ms INTEGER NOT NULL, http_status INTEGER, content_type TEXT, headers TEXT, body BLOB);"
-    "CREATE INDEX IF NOT EXISTS jobs_by_status ON jobs (status, client);";
+    "CREATE INDEX IF NOT EXISTS jobs_by_status ON jobs (status, client);"
+    "CREATE INDEX IF NOT EXISTS jobs_by_client_finish ON jobs (client, finished_at_ms);"
+    "CREATE INDEX IF NOT EXISTS jobs_by_finish ON jobs (finished_at_ms);";
 
 constexpr const char* kFinished = "status IN ('done', 'failed', 'cancelled')";
 constexpr const char* kUnfinished = "status IN ('queued', 'running')";
@@ -184,6 +186,7 @@ SqliteJobStore::SqliteJobStore(const std::string& path, JobStorageLimits limits)
     Statement requeue(db_, "UPDATE jobs SET status = 'queued' WHERE status = 'running'");
     requeue.step();
     requeued_at_open_ = requeue.changes();
+    count_usage();
     header_at_open_ = has_sqlite_header();
     for (const char* suffix : {"", "-wal", "-shm"}) {
       struct stat st {};
@@ -249,65 +252,106 @@ void SqliteJobStore::execute(const char* sql) {
   }
 }
 
-std::int64_t SqliteJobStore::unfinished_bytes(const std::string& client) {
-  Statement s(db_, std::string("SELECT coalesce(SUM(") + kStoredBytes + "), 0) FROM jobs WHERE " + kUnfinished +
-                       (client.empty() ? "" : " AND client = ?"));
-  if (!client.empty()) s.bind(1, client);
-  s.step();
-  return s.integer(0);
+void SqliteJobStore::count_usage() {
+  usage_.clear();
+  total_ = Usage{};
+  Statement s(db_, std::string("SELECT client, ") + kFinished + ", COUNT(*), coalesce(SUM(" + kStoredBytes +
+                       "), 0) FROM jobs GROUP BY client, " + kFinished);
+  while (s.step()) {
+    Usage& usage = usage_[s.text(0)];
+    const bool finished = s.integer(1) != 0;
+    (finished ? usage.finished_bytes : usage.unfinished_bytes) += s.integer(3);
+    if (finished) usage.finished += s.integer(2);
+  }
+  for (const auto& [client, usage] : usage_) {
+    total_.finished += usage.finished;
+    total_.finished_bytes += usage.finished_bytes;
+    total_.unfinished_bytes += usage.unfinished_bytes;
+  }
+}
+
+void SqliteJobStore::add_usage(const std::string& client, std::int64_t finished, std::int64_t finished_bytes,
+                               std::int64_t unfinished_bytes) {
+  for (Usage* usage : {&usage_[client], &total_}) {
+    usage->finished += finished;
+    usage->finished_bytes += finished_bytes;
+    usage->unfinished_bytes += unfinished_bytes;
+  }
 }
 
 void SqliteJobStore::evict_over_limits(const std::string& client, const std::string& keep) {
-  // The kept job's bytes and place stay whatever is evicted, as do unfinished jobs'.
-  std::int64_t keep_bytes = 0;
-  std::int64_t keep_count = 0;
-  {
-    Statement s(db_, std::string("SELECT ") + kStoredBytes + " FROM jobs WHERE id = ? AND " + kFinished);
-    s.bind(1, keep);
-    if (s.step()) {
-      keep_bytes = s.integer(0);
-      keep_count = 1;
+  // The oldest finished job but `keep` goes while a cap is passed: the same jobs as
+  // JobStorageLimits's rule (first_evicted()), one indexed delete at a time.
+  const auto over = [](const Usage& usage, std::size_t max_finished, std::size_t max_bytes) {
+    return budget_after(max_finished, usage.finished) < 0 ||
+           budget_after(max_bytes, usage.finished_bytes + usage.unfinished_bytes) < 0;
+  };
+  for (const bool per_client : {true, false}) {
+    const std::size_t max_finished = per_client ? limits_.max_finished_per_client : limits_.max_finished;
+    const std::size_t max_bytes = per_client ? limits_.max_bytes_per_client : limits_.max_bytes;
+    while (over(per_client ? usage_[client] : total_, max_finished, max_bytes)) {
+      Statement s(db_, std::string("DELETE FROM jobs WHERE rowid = (SELECT rowid FROM jobs WHERE ") + kFinished +
+                           " AND id <> ?" + (per_client ? " AND client = ?" : "") +
+                           " ORDER BY finished_at_ms, rowid LIMIT 1) RETURNING client, " + kStoredBytes);
+      s.bind(1, keep);
+      if (per_client) s.bind(2, client);
+      if (!s.step()) break;  // only `keep` is left
+      const std::string victim = s.text(0);
+      const std::int64_t bytes = s.integer(1);
+      while (s.step()) {
+      }
+      add_usage(victim, -1, -bytes, 0);
     }
   }
-  const auto evict = [&](const std::string& who, std::size_t max_bytes, std::size_t max_finished) {
-    if (max_bytes == JobStorageLimits::kNone && max_finished == JobStorageLimits::kNone) return;
-    // Newest first, the running sum of bytes and count: from the first row past a
-    // cap every older row goes (JobStorageLimits's rule, as first_evicted() states it).
-    Statement s(db_, std::string("DELETE FROM jobs WHERE rowid IN (SELECT rowid FROM (SELECT rowid, SUM(") +
-                         kStoredBytes + ") OVER w AS bytes, ROW_NUMBER() OVER w AS n FROM jobs WHERE " + kFinished +
-                         " AND id <> ?" + (who.empty() ? "" : " AND client = ?") +
-                         " WINDOW w AS (ORDER BY finished_at_ms DESC, rowid DESC)) WHERE bytes > ? OR n > ?)");
-    int i = 1;
-    s.bind(i++, keep);
-    if (!who.empty()) s.bind(i++, who);
-    s.bind(i++, budget_after(max_bytes, unfinished_bytes(who) + keep_bytes));
-    s.bind(i++, budget_after(max_finished, keep_count));
-    s.step();
-  };
-  evict(client, limits_.max_bytes_per_client, limits_.max_finished_per_client);
-  evict("", limits_.max_bytes, limits_.max_finished);
 }
 
-bool SqliteJobStore::settle_and_evict(Statement& update, const std::string& id) {
+bool SqliteJobStore::settle_and_evict(Statement& update, const std::string& id, std::int64_t result_bytes) {
+  std::int64_t unfinished_bytes = 0;
+  {
+    Statement s(db_, std::string("SELECT ") + kStoredBytes + " FROM jobs WHERE id = ?");
+    s.bind(1, id);
+    if (s.step()) unfinished_bytes = s.integer(0);
+  }
   if (!update.step()) return false;
   const std::string client = update.text(0);
   while (update.step()) {
   }
+  add_usage(client, 1, result_bytes, -unfinished_bytes);
   evict_over_limits(client, id);
   return true;
+}
+
+template <typename Change>
+auto SqliteJobStore::keeping_usage(Change change) {
+  try {
+    return change();
+  } catch (...) {
+    // Rolled back: the counts may have moved with it, so they are counted again.
+    try {
+      count_usage();
+    } catch (...) {
+    }
+    throw;
+  }
 }
 
 JobAdmission SqliteJobStore::insert(const JobRecord& job, std::size_t max_unfinished) {
   std::lock_guard lock(mutex_);
   check_files();
+  return keeping_usage([&] { return insert_locked(job, max_unfinished); });
+}
+
+JobAdmission SqliteJobStore::insert_locked(const JobRecord& job, std::size_t max_unfinished) {
   Transaction transaction(*this);
-  if (job.status == JobStatus::queued) {
+  const bool queued = job.status == JobStatus::queued;
+  const auto bytes =
+      static_cast<std::int64_t>(job_stored_bytes(job)) - (queued ? 0 : static_cast<std::int64_t>(job.request.size()));
+  if (queued) {
     if (count_unfinished_locked(job.client) >= max_unfinished) return JobAdmission::client_job_cap;
-    const auto bytes = static_cast<std::int64_t>(job_stored_bytes(job));
-    if (budget_after(limits_.max_bytes_per_client, unfinished_bytes(job.client)) < bytes) {
+    if (budget_after(limits_.max_bytes_per_client, usage_[job.client].unfinished_bytes) < bytes) {
       return JobAdmission::client_bytes_cap;
     }
-    if (budget_after(limits_.max_bytes, unfinished_bytes("")) < bytes) return JobAdmission::store_bytes_cap;
+    if (budget_after(limits_.max_bytes, total_.unfinished_bytes) < bytes) return JobAdmission::store_bytes_cap;
   }
   Statement s(db_, std::string("INSERT INTO jobs (") + kColumns + ") VALUES (?,?,?,?,?,?,?,?,?,?,?,?)");
   s.bind(1, job.id)
@@ -321,6 +365,7 @@ JobAdmission SqliteJobStore::insert(const JobRecord& job, std::size_t max_unfini
     s.bind(11, join_headers(job.result->headers)).bind_blob(12, job.result->body);
   }
   s.step();
+  add_usage(job.client, queued ? 0 : 1, queued ? 0 : bytes, queued ? bytes : 0);
   evict_over_limits(job.client, job.id);
   transaction.commit();
   return JobAdmission::admitted;
@@ -354,7 +399,14 @@ bool SqliteJobStore::finish(const std::string& id, JobStatus status, const std::
                             std::int64_t finished_at_ms) {
   std::lock_guard lock(mutex_);
   check_files();
+  return keeping_usage([&] { return finish_locked(id, status, result, finished_at_ms); });
+}
+
+bool SqliteJobStore::finish_locked(const std::string& id, JobStatus status, const std::optional<JobResult>& result,
+                                   std::int64_t finished_at_ms) {
   Transaction transaction(*this);
+  JobRecord settled;
+  settled.result = result;
   Statement s(db_,
               "UPDATE jobs SET status = ?, finished_at_ms = ?, http_status = ?, content_type = ?, headers = ?, "
               "body = ?, request = '' WHERE id = ? AND status = 'running' RETURNING client");
@@ -364,7 +416,7 @@ bool SqliteJobStore::finish(const std::string& id, JobStatus status, const std::
     s.bind(5, join_headers(result->headers)).bind_blob(6, result->body);
   }
   s.bind(7, id);
-  if (!settle_and_evict(s, id)) return false;
+  if (!settle_and_evict(s, id, static_cast<std::int64_t>(job_stored_bytes(settled)))) return false;
   transaction.commit();
   return true;
 }
@@ -372,23 +424,22 @@ bool SqliteJobStore::finish(const std::string& id, JobStatus status, const std::
 bool SqliteJobStore::cancel_queued(const std::string& id, std::int64_t finished_at_ms) {
   std::lock_guard lock(mutex_);
   check_files();
-  Transaction transaction(*this);
-  Statement s(db_,
-              "UPDATE jobs SET status = 'cancelled', finished_at_ms = ?, request = '' WHERE id = ? AND status = "
-              "'queued' RETURNING client");
-  s.bind(1, finished_at_ms).bind(2, id);
-  if (!settle_and_evict(s, id)) return false;
-  transaction.commit();
-  return true;
+  return keeping_usage([&] {
+    Transaction transaction(*this);
+    Statement s(db_,
+                "UPDATE jobs SET status = 'cancelled', finished_at_ms = ?, request = '' WHERE id = ? AND status = "
+                "'queued' RETURNING client");
+    s.bind(1, finished_at_ms).bind(2, id);
+    if (!settle_and_evict(s, id, 0)) return false;
+    transaction.commit();
+    return true;
+  });
 }
 
 bool SqliteJobStore::remove_finished(const std::string& id) {
   std::lock_guard lock(mutex_);
   check_files();
-  Statement s(db_, "DELETE FROM jobs WHERE id = ? AND status IN ('done', 'failed', 'cancelled')");
-  s.bind(1, id);
-  s.step();
-  return s.changes() == 1;
+  return remove_returning_usage(std::string("DELETE FROM jobs WHERE id = ? AND ") + kFinished, id) == 1;
 }
 
 std::size_t SqliteJobStore::count_unfinished(const std::string& client) {
@@ -415,10 +466,22 @@ std::size_t SqliteJobStore::count_unfinished() {
 std::size_t SqliteJobStore::remove_finished_before(std::int64_t cutoff_ms) {
   std::lock_guard lock(mutex_);
   check_files();
-  Statement s(db_, "DELETE FROM jobs WHERE status IN ('done', 'failed', 'cancelled') AND finished_at_ms < ?");
-  s.bind(1, cutoff_ms);
-  s.step();
-  return s.changes();
+  return remove_returning_usage(std::string("DELETE FROM jobs WHERE ") + kFinished + " AND finished_at_ms < ?",
+                                cutoff_ms);
+}
+
+template <typename Key>
+std::size_t SqliteJobStore::remove_returning_usage(const std::string& delete_where, const Key& key) {
+  return keeping_usage([&] {
+    Statement s(db_, delete_where + " RETURNING client, " + kStoredBytes);
+    s.bind(1, key);
+    std::size_t removed = 0;
+    while (s.step()) {
+      add_usage(s.text(0), -1, -s.integer(1), 0);
+      ++removed;
+    }
+    return removed;
+  });
 }
 
 }  // namespace implicitizer::server

@@ -14,6 +14,7 @@
 #include <sqlite3.h>
 #include <sys/types.h>
 
+#include <map>
 #include <mutex>
 #include <vector>
 
@@ -57,12 +58,30 @@ class SqliteJobStore : public JobStore {
   };
   void execute(const char* sql);
   std::size_t count_unfinished_locked(const std::string& client);
-  // Unfinished bytes of `client` (of everyone when empty).
-  std::int64_t unfinished_bytes(const std::string& client);
+  // What the caps count, of one client or of all. Exact because this process is the
+  // file's only writer (the lock): counted at opening, kept up to date by every
+  // change, counted again after a change that failed.
+  struct Usage {
+    std::int64_t finished = 0;
+    std::int64_t finished_bytes = 0;
+    std::int64_t unfinished_bytes = 0;
+  };
+  void count_usage();
+  void add_usage(const std::string& client, std::int64_t finished, std::int64_t finished_bytes,
+                 std::int64_t unfinished_bytes);
+  // Runs `change` (a write); if it throws, counts the usage again and rethrows.
+  template <typename Change>
+  auto keeping_usage(Change change);
+  template <typename Key>
+  std::size_t remove_returning_usage(const std::string& delete_where, const Key& key);
+  JobAdmission insert_locked(const JobRecord& job, std::size_t max_unfinished);
+  bool finish_locked(const std::string& id, JobStatus status, const std::optional<JobResult>& result,
+                     std::int64_t finished_at_ms);
   void evict_over_limits(const std::string& client, const std::string& keep);
-  // Steps `update` (an UPDATE of job `id` ... RETURNING client) and evicts what its
-  // change calls for; false when it changed no row.
-  bool settle_and_evict(Statement& update, const std::string& id);
+  // Steps `update` (an UPDATE that finishes job `id` ... RETURNING client; its
+  // result now weighs `result_bytes`) and evicts what its change calls for; false
+  // when it changed no row.
+  bool settle_and_evict(Statement& update, const std::string& id, std::int64_t result_bytes);
   // Throws when the database file or its WAL is no longer the one opened, or the
   // file no longer starts with SQLite's header.
   void check_files();
@@ -76,6 +95,8 @@ class SqliteJobStore : public JobStore {
   int lock_fd_ = -1;
   sqlite3* db_ = nullptr;
   std::vector<FileIdentity> files_;
+  std::map<std::string, Usage> usage_;
+  Usage total_;
   bool reported_file_ = false;
   bool header_at_open_ = false;  // a database in WAL mode has its header once created
   std::size_t requeued_at_open_ = 0;
