@@ -40,6 +40,13 @@ const char* const kServerUsage =
     "  --max-job-seconds N         time limit of one job (3600)\n"
     "  --job-ttl N                 seconds a finished job's result is kept (3600)\n"
     "  --max-jobs-per-client N     queued or running jobs per client before 429 (16)\n"
+    "  --max-finished-jobs-per-client N\n"
+    "                              finished jobs kept per client; the oldest go first (256)\n"
+    "  --max-finished-jobs N       finished jobs kept of all clients (4096)\n"
+    "  --max-job-bytes-per-client N\n"
+    "                              bytes of one client's stored jobs: the oldest finished go\n"
+    "                              first; unfinished ones past it get 507 (67108864)\n"
+    "  --max-job-bytes N           bytes of all stored jobs, likewise (268435456)\n"
     "  --job-threads N             threads running jobs, apart from --threads (1)\n"
     "  --store STORE               where jobs are kept: memory, sqlite[:PATH] (sqlite alone:\n"
     "                              ./implicitizer-jobs.sqlite3) or redis://HOST:PORT (memory)\n"
@@ -157,6 +164,10 @@ std::map<std::string, FlagSetter> make_flag_setters(ServerConfig& config) {
       {"max-job-seconds", seconds(config.max_job_time)},
       {"job-ttl", seconds(config.job_ttl)},
       {"max-jobs-per-client", count(config.max_jobs_per_client, 1, 1'000'000)},
+      {"max-finished-jobs-per-client", count(config.max_finished_jobs_per_client, 1, 1'000'000'000)},
+      {"max-finished-jobs", count(config.max_finished_jobs, 1, 1'000'000'000)},
+      {"max-job-bytes-per-client", count(config.max_job_bytes_per_client, 1, kBig)},
+      {"max-job-bytes", count(config.max_job_bytes, 1, kBig)},
       {"job-threads", count(config.job_threads, 1, 1024)},
       {"job-lease-seconds", seconds(config.job_lease)},
       {"client-ip-header", [&](const std::string&, const std::string& v) { config.client_ip_header = v; }},

@@ -65,6 +65,18 @@ struct ServerConfig {
   /// --max-jobs-per-client: jobs one client (peer address) may have queued or
   /// running; one more gets 429 + Retry-After.
   std::size_t max_jobs_per_client = 16;
+  /// --max-finished-jobs-per-client: finished jobs (results) kept per client; past
+  /// it the client's oldest finished job is evicted (a cache, not a refusal).
+  std::size_t max_finished_jobs_per_client = 256;
+  /// --max-finished-jobs: finished jobs kept of all clients; past it the oldest goes.
+  std::size_t max_finished_jobs = 4096;
+  /// --max-job-bytes-per-client: bytes of one client's stored jobs (requests of
+  /// unfinished jobs, results of finished ones). Past it the client's oldest finished
+  /// jobs are evicted; a submission whose request would bring the queued and running
+  /// jobs alone past it gets 507 job_storage_full.
+  std::size_t max_job_bytes_per_client = std::size_t{64} << 20;
+  /// --max-job-bytes: the same for all clients together.
+  std::size_t max_job_bytes = std::size_t{256} << 20;
   /// --job-threads: threads running jobs, apart from the request workers.
   unsigned job_threads = 1;
   /// --store: where jobs are kept: `memory` (the default; lost on restart),

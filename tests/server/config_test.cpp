@@ -66,6 +66,18 @@ TEST(ServerFlags, JobFlags) {
   EXPECT_EQ(defaults->store, "memory");
   EXPECT_EQ(defaults->job_lease.count(), 15);
   EXPECT_EQ(defaults->client_ip_header, "");
+  EXPECT_EQ(defaults->max_finished_jobs_per_client, 256u);
+  EXPECT_EQ(defaults->max_finished_jobs, 4096u);
+  EXPECT_EQ(defaults->max_job_bytes_per_client, std::size_t{64} << 20);
+  EXPECT_EQ(defaults->max_job_bytes, std::size_t{256} << 20);
+  const auto storage = parse_server_flags({"--max-finished-jobs-per-client", "3", "--max-finished-jobs", "9",
+                                           "--max-job-bytes-per-client", "1000", "--max-job-bytes=5000"});
+  ASSERT_TRUE(storage);
+  EXPECT_EQ(storage->max_finished_jobs_per_client, 3u);
+  EXPECT_EQ(storage->max_finished_jobs, 9u);
+  EXPECT_EQ(storage->max_job_bytes_per_client, 1000u);
+  EXPECT_EQ(storage->max_job_bytes, 5000u);
+  EXPECT_THROW(parse_server_flags({"--max-job-bytes", "0"}), UsageError);
 
   const auto config =
       parse_server_flags({"--max-job-seconds", "7200", "--job-ttl=60", "--max-jobs-per-client", "2", "--job-threads",

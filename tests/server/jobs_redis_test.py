@@ -16,7 +16,7 @@ import time
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from server_harness import Checks, Redis, Server, run_tests  # noqa: E402
+from server_harness import Checks, Redis, Server, error_code, run_tests  # noqa: E402
 from jobs_test import FINISH_DEADLINE_S, LONG, MEDIUM, SMALL, cpu_ticks, finished, job, submit, wait_for  # noqa: E402
 
 CHECKS = Checks()
@@ -132,6 +132,62 @@ def test_kill_9_takeover(a, b):
         print("kill -9 takeover: done %.1f s after the kill (lease %d s)" % (time.monotonic() - killed_at, LEASE_S))
 
 
+def redis_keys(redis, pattern):
+    """The keys of `redis` matching `pattern` (KEYS over RESP)."""
+    with socket.create_connection(("127.0.0.1", redis.port), timeout=30) as c:
+        c.sendall(("*2\r\n$4\r\nKEYS\r\n$%d\r\n%s\r\n" % (len(pattern), pattern)).encode())
+        data = b""
+        while True:
+            chunk = c.recv(65536)
+            data += chunk
+            lines = data.split(b"\r\n")
+            if chunk == b"" or (lines[0].startswith(b"*") and len(lines) >= 2 * int(lines[0][1:]) + 2):
+                break
+    lines = data.split(b"\r\n")
+    return [lines[2 + 2 * i].decode() for i in range(int(lines[0][1:]))]
+
+
+def test_storage_bounded(binary, redis_binary):
+    """Issue 41 with a shared store: finished jobs past the per-client cap are evicted
+    from Redis itself (through either replica), and queued requests past the byte
+    cap are refused with 507."""
+    redis = Redis(redis_binary)
+    flags = ("--store", "redis://127.0.0.1:%d" % redis.port, "--job-threads", "1", "--quiet",
+             "--max-finished-jobs-per-client", "4", "--max-job-bytes-per-client", "1000000")
+    replicas = [Server(binary, *flags), Server(binary, *flags)]
+    try:
+        failing = {"polynomials": ["x" + " " * 200_000 + "+"]}
+        ids = []
+        for i in range(10):
+            status, _, body = submit(replicas[i % 2], "groebner", failing)
+            check(status == 202, "redis: failing job %d accepted: %s" % (i, status))
+            if status != 202:
+                return
+            ids.append(body["id"])
+            state = wait_for(replicas[(i + 1) % 2], body["id"], finished)
+            check(state is not None and state["status"] == "failed", "redis: job %d failed: %r" % (i, state))
+        kept = [job_id for job_id in ids if job(replicas[0], job_id)[0] == 200]
+        check(kept == ids[-4:], "redis: the 4 newest finished jobs are kept: %d kept" % len(kept))
+        check(len(redis_keys(redis, "implicitizer:job:*")) == 4, "redis: the evicted jobs' hashes are gone")
+        _, _, running = submit(replicas[0], "groebner", LONG)
+        _, _, running2 = submit(replicas[1], "groebner", LONG)
+        check(all(wait_for(replicas[0], r["id"], lambda j: j["status"] == "running") is not None
+                  for r in (running, running2)), "redis: both replicas run a long job")
+        big = {"polynomials": ["x" + " " * 600_000 + "+y"]}
+        status, _, queued = submit(replicas[0], "groebner", big)
+        check(status == 202, "redis: 600 kB queued: %s" % status)
+        status, _, body = submit(replicas[1], "groebner", big)
+        check(status == 507 and error_code(body) == "job_storage_full"
+              and "--max-job-bytes-per-client" in body["error"]["message"],
+              "redis: a second 600 kB queued request through the other replica: %s %r" % (status, body))
+        for job_id in (queued["id"], running["id"], running2["id"]):
+            replicas[0].request("DELETE", "/v1/jobs/" + job_id)
+    finally:
+        for s in replicas:
+            s.close()
+        redis.close()
+
+
 def main():
     if len(sys.argv) < 3 or not sys.argv[2]:
         print("no redis-server: skipped")
@@ -148,6 +204,7 @@ def main():
             lambda: test_shared_result_cache(redis, a, servers[1]),
             lambda: test_cap_across_replicas(a, servers[1]),
             lambda: test_kill_9_takeover(a, servers[1]),
+            lambda: test_storage_bounded(binary, redis_binary),
         ])
         # Unknown store addresses stop the start, with a message.
         result = subprocess.run([binary, "--port", "0", "--store", "redis://127.0.0.1:1"], capture_output=True,

@@ -390,6 +390,120 @@ def test_sqlite_keeps_results_and_requeues(binary):
         shutil.rmtree(base, ignore_errors=True)
 
 
+def rss_mib(pid):
+    """The resident memory of process `pid` in MiB (VmRSS of /proc/PID/status)."""
+    with open("/proc/%d/status" % pid) as f:
+        for line in f:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1]) / 1024.0
+    return 0.0
+
+
+# A groebner request of about 1 MB that the submission accepts (its shape is right)
+# and the job fails at once (the expression does not parse).
+FAILING_1MB = {"polynomials": ["x" + " " * 1_000_000 + "+"]}
+
+
+def test_finished_jobs_are_bounded(binary):
+    # Issue 41: one client posting 1 MB requests that fail at once grew the server by
+    # its requests (519 jobs: 11 to 513 MB), each kept --job-ttl.
+    cap, jobs = 60, 120
+    s = Server(binary, "--job-threads", "1", "--cache-size", "0", "--max-finished-jobs-per-client", str(cap),
+               "--quiet")
+    try:
+        ids, before = [], rss_mib(s.proc.pid)
+        for _ in range(jobs):
+            status, _, body = submit(s, "groebner", FAILING_1MB)
+            check(status == 202, "a 1 MB job is accepted: %s %r" % (status, body))
+            if status != 202:
+                return
+            ids.append(body["id"])
+            state = wait_for(s, body["id"], finished)
+            check(state is not None and state["status"] == "failed", "the 1 MB job fails: %r" % state)
+        after = rss_mib(s.proc.pid)
+        kept = [job_id for job_id in ids if job(s, job_id)[0] == 200]
+        check(kept == ids[-cap:], "the %d newest finished jobs are kept, the older evicted: %d kept, newest %s"
+              % (cap, len(kept), kept == ids[-len(kept):]))
+        # Kept with their requests (or their buffers), the 60 kept would hold 60 MB and
+        # all 120 without a cap 120 MB; a finished job keeps none (16 MiB measured).
+        check(after - before < 50, "RSS grew %.0f MiB over %d finished 1 MB jobs" % (after - before, jobs))
+        print("bounded jobs: %d failing 1 MB jobs, %d kept, RSS %.0f -> %.0f MiB" % (jobs, len(kept), before, after))
+    finally:
+        close_showing_log(s, CHECKS)
+
+
+def test_storage_full_names_the_cap(binary):
+    # Only queued and running requests can fill the store: past the byte cap a
+    # submission is refused, naming the cap and its flag.
+    s = Server(binary, "--job-threads", "1", "--max-job-bytes-per-client", "1000000", "--retry-after", "3", "--quiet")
+    try:
+        _, _, running = submit(s, "groebner", LONG)
+        state = wait_for(s, running["id"], lambda j: j["status"] == "running")
+        check(state is not None, "storage: the long job runs")
+        big = {"polynomials": ["x" + " " * 600_000 + "+y"]}
+        status, _, queued = submit(s, "groebner", big)
+        check(status == 202, "storage: 600 kB queued: %s %r" % (status, queued))
+        status, headers, body = submit(s, "groebner", big)
+        check(status == 507 and error_code(body) == "job_storage_full" and headers.get("retry-after") == "3"
+              and "--max-job-bytes-per-client" in body["error"]["message"] and "1000000" in body["error"]["message"],
+              "storage: a second 600 kB queued request passes the cap: %s %r" % (status, body))
+        status, _, body = submit(s, "groebner", SMALL)
+        check(status == 202, "storage: a small one still fits: %s %r" % (status, body))
+        for job_id in (queued["id"], body["id"], running["id"]):
+            s.request("DELETE", "/v1/jobs/" + job_id)
+    finally:
+        close_showing_log(s, CHECKS)
+
+
+def test_sqlite_second_server_is_refused(binary):
+    # Issue 41: a second server on the file requeued the first one's running job and
+    # claimed it: both ran it.
+    import subprocess
+    base = tempfile.mkdtemp(prefix="implicitizer-jobs-")
+    path = os.path.join(base, "jobs.sqlite3")
+    s = Server(binary, "--store", "sqlite:" + path, "--job-threads", "1", "--quiet")
+    try:
+        _, _, running = submit(s, "groebner", LONG)
+        state = wait_for(s, running["id"], lambda j: j["status"] == "running")
+        check(state is not None, "sqlite owner: the job runs")
+        try:
+            second = subprocess.run([binary, "--port", "0", "--store", "sqlite:" + path, "--quiet"],
+                                    capture_output=True, text=True, timeout=60)
+            check(second.returncode == 1 and path in second.stderr and ("pid %d" % s.proc.pid) in second.stderr,
+                  "a second server on the file exits 1 naming the file and the owner: %s %r"
+                  % (second.returncode, second.stderr))
+        except subprocess.TimeoutExpired:
+            check(False, "a second server on the file started")
+        status, state = job(s, running["id"])
+        check(status == 200 and state["status"] == "running", "the owner still runs its job: %r" % state)
+        s.request("DELETE", "/v1/jobs/" + running["id"])
+    finally:
+        close_showing_log(s, CHECKS)
+        shutil.rmtree(base, ignore_errors=True)
+
+
+def test_sqlite_deleted_file_is_503(binary):
+    # Issue 41: deleting the file and its -wal/-shm went unnoticed until a restart lost every job.
+    base = tempfile.mkdtemp(prefix="implicitizer-jobs-")
+    path = os.path.join(base, "jobs.sqlite3")
+    s = Server(binary, "--store", "sqlite:" + path, "--job-threads", "1", "--retry-after", "2")
+    try:
+        _, _, body = submit(s, "groebner", SMALL)
+        check(wait_for(s, body["id"], finished) is not None, "sqlite delete: the job finished")
+        for suffix in ("", "-wal", "-shm"):
+            if os.path.exists(path + suffix):
+                os.unlink(path + suffix)
+        status, headers, data = s.request("GET", "/v1/jobs/" + body["id"])
+        check(status == 503 and error_code(json.loads(data)) == "job_store_unavailable"
+              and headers.get("retry-after") == "2", "a deleted store answers 503: %s %r" % (status, data))
+        status, _, data = submit(s, "groebner", SMALL)
+        check(status == 503 and error_code(data) == "job_store_unavailable", "and refuses jobs: %s %r" % (status, data))
+        check("was deleted or replaced" in s.log_text(), "the log says the file went")
+    finally:
+        close_showing_log(s, CHECKS)
+        shutil.rmtree(base, ignore_errors=True)
+
+
 def test_bad_store_flag(binary):
     import subprocess
     result = subprocess.run([binary, "--store", "redis"], capture_output=True, text=True, timeout=30)
@@ -415,6 +529,10 @@ def main():
         lambda: test_cap_and_cancel(BIN),
         lambda: test_cap_per_proxied_client(BIN),
         lambda: test_sqlite_keeps_results_and_requeues(BIN),
+        lambda: test_finished_jobs_are_bounded(BIN),
+        lambda: test_storage_full_names_the_cap(BIN),
+        lambda: test_sqlite_second_server_is_refused(BIN),
+        lambda: test_sqlite_deleted_file_is_503(BIN),
         lambda: test_bad_store_flag(BIN),
     ]
     try:

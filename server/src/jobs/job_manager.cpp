@@ -73,14 +73,20 @@ ServerConfig with_job_limits(const ServerConfig& config) {
 
 }  // namespace
 
+JobStorageLimits make_job_storage_limits(const ServerConfig& config) {
+  return JobStorageLimits{config.max_finished_jobs_per_client, config.max_finished_jobs,
+                          config.max_job_bytes_per_client, config.max_job_bytes};
+}
+
 std::unique_ptr<JobStore> make_job_store(const ServerConfig& config) {
-  if (config.store.rfind("sqlite:", 0) == 0) return std::make_unique<SqliteJobStore>(config.store.substr(7));
+  const JobStorageLimits limits = make_job_storage_limits(config);
+  if (config.store.rfind("sqlite:", 0) == 0) return std::make_unique<SqliteJobStore>(config.store.substr(7), limits);
   if (config.store.rfind("redis://", 0) == 0) {
     const auto [host, port] = parse_redis_address(config.store);
-    return std::make_unique<RedisJobStore>(host, port,
-                                           std::chrono::duration_cast<std::chrono::milliseconds>(config.job_lease));
+    return std::make_unique<RedisJobStore>(
+        host, port, std::chrono::duration_cast<std::chrono::milliseconds>(config.job_lease), limits);
   }
-  return std::make_unique<MemoryJobStore>();
+  return std::make_unique<MemoryJobStore>(limits);
 }
 
 std::unique_ptr<SharedResultCache> make_shared_result_cache(const ServerConfig& config) {
@@ -131,6 +137,18 @@ Response JobManager::make_too_many_jobs_response() const {
   return response;
 }
 
+Response JobManager::make_storage_full_response(JobAdmission refusal) const {
+  const bool per_client = refusal == JobAdmission::client_bytes_cap;
+  const std::size_t cap = per_client ? server_config_.max_job_bytes_per_client : server_config_.max_job_bytes;
+  Response response = make_error_response(
+      http::status::insufficient_storage, "job_storage_full",
+      std::string("the queued and running jobs of ") + (per_client ? "this client" : "all clients") +
+          " with this request would hold more than " + std::to_string(cap) + " bytes (--max-job-bytes" +
+          (per_client ? "-per-client" : "") + "); retry when one has finished");
+  response.set(http::field::retry_after, std::to_string(server_config_.retry_after_seconds));
+  return response;
+}
+
 Response JobManager::submit(const Request& request, const std::string& client) {
   JobSubmission submission;
   try {
@@ -162,7 +180,16 @@ Response JobManager::submit(const Request& request, const std::string& client) {
     job.started_at_ms = job.finished_at_ms = job.created_at_ms;
     job.result = make_job_result(*answered);
   }
-  if (!store_->insert(job, server_config_.max_jobs_per_client)) return make_too_many_jobs_response();
+  switch (store_->insert(job, server_config_.max_jobs_per_client)) {
+    case JobAdmission::admitted:
+      break;
+    case JobAdmission::client_job_cap:
+      return make_too_many_jobs_response();
+    case JobAdmission::client_bytes_cap:
+      return make_storage_full_response(JobAdmission::client_bytes_cap);
+    case JobAdmission::store_bytes_cap:
+      return make_storage_full_response(JobAdmission::store_bytes_cap);
+  }
   wake_.notify_one();
   Response response = make_json_response(http::status::accepted, encode_job(make_view(job)));
   response.set(http::field::location, "/v1/jobs/" + job.id);

@@ -48,7 +48,9 @@ class JobManager {
 
   /// POST /v1/jobs from `client`: 202 with `{"id", "status"}` and Location; the
   /// endpoint's own error (same status and body) for a request it would refuse;
-  /// 400 `unknown_job_kind`; 429 `too_many_jobs` with Retry-After at the client's cap.
+  /// 400 `unknown_job_kind`; 429 `too_many_jobs` with Retry-After at the client's cap;
+  /// 507 `job_storage_full` with Retry-After when the unfinished jobs' requests would
+  /// pass a byte cap (finished jobs are evicted instead, oldest first).
   Response submit(const Request& request, const std::string& client);
   /// The state of job `id` (encode_job), or nullopt when there is no such job.
   std::optional<JobView> view(const std::string& id);
@@ -86,6 +88,7 @@ class JobManager {
   JobView make_view(const JobRecord& job);
   Request make_endpoint_request(const std::string& kind, const std::string& body) const;
   Response make_too_many_jobs_response() const;
+  Response make_storage_full_response(JobAdmission refusal) const;
   // Every kHeartbeat: renews the leases of this replica's running jobs in the store,
   // publishes their progress, and cancels those another replica asked to cancel.
   void beat();
@@ -113,7 +116,11 @@ class JobManager {
   std::vector<std::thread> threads_;
 };
 
-/// The store `--store` names (config.store): MemoryJobStore, SqliteJobStore or RedisJobStore.
+/// The caps of config's --max-finished-jobs[-per-client] and --max-job-bytes[-per-client].
+JobStorageLimits make_job_storage_limits(const ServerConfig& config);
+
+/// The store `--store` names (config.store): MemoryJobStore, SqliteJobStore or RedisJobStore,
+/// holding within make_job_storage_limits(config).
 /// Throws std::runtime_error when the SQLite file cannot be opened.
 std::unique_ptr<JobStore> make_job_store(const ServerConfig& config);
 

@@ -10,30 +10,37 @@
 #include <string>
 
 #include "jobs/job.hpp"
+#include "jobs/job_storage_limits.hpp"
 
 namespace implicitizer::server {
 
-/// The jobs of one server (or of several replicas sharing a store).
+/// The jobs of one server (or of several replicas sharing a store). A store holds
+/// within the JobStorageLimits it was made with: the insert, finish or cancel that
+/// passes a cap evicts the oldest finished jobs (never the job it acts on) in the
+/// same atomic step, and a finished job keeps no request.
 class JobStore {
  public:
   virtual ~JobStore() = default;
 
   /// Adds `job` (a new id) unless it is queued and its client already has
-  /// `max_unfinished` jobs queued or running: false then, and nothing is added. The
+  /// `max_unfinished` jobs queued or running, or its request would bring the queued
+  /// and running jobs past a byte cap: that refusal then, and nothing is added. The
   /// check and the insertion are one step, so concurrent submissions (on several
-  /// threads or replicas) cannot pass the cap together. A job inserted queued is
+  /// threads or replicas) cannot pass a cap together. A job inserted queued is
   /// later returned by claim_next().
-  virtual bool insert(const JobRecord& job, std::size_t max_unfinished) = 0;
+  virtual JobAdmission insert(const JobRecord& job, std::size_t max_unfinished) = 0;
   /// The job `id`, or nullopt when there is none (never was, removed, expired).
   virtual std::optional<JobRecord> find(const std::string& id) = 0;
   /// Takes the oldest queued job and marks it running, started at `now_ms` (Unix
   /// milliseconds); nullopt when none is queued.
   virtual std::optional<JobRecord> claim_next(std::int64_t now_ms) = 0;
   /// Marks the running job `id` finished with `status` (done, failed, cancelled) and
-  /// `result` at `finished_at_ms` (Unix milliseconds). False when it is not running.
+  /// `result` at `finished_at_ms` (Unix milliseconds), dropping its request. False
+  /// when it is not running.
   virtual bool finish(const std::string& id, JobStatus status, const std::optional<JobResult>& result,
                       std::int64_t finished_at_ms) = 0;
-  /// Marks the queued job `id` cancelled at `finished_at`; false when it is not queued.
+  /// Marks the queued job `id` cancelled at `finished_at`, dropping its request;
+  /// false when it is not queued.
   virtual bool cancel_queued(const std::string& id, std::int64_t finished_at_ms) = 0;
   /// Removes the finished job `id`; false when there is no finished job `id`.
   virtual bool remove_finished(const std::string& id) = 0;

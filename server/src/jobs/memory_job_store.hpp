@@ -3,6 +3,7 @@
 /// The embedded default store: jobs in this process's memory, no set-up, lost with the
 /// process (`--store memory`).
 
+#include <cstdint>
 #include <deque>
 #include <mutex>
 #include <unordered_map>
@@ -14,7 +15,10 @@ namespace implicitizer::server {
 /// Jobs in a hash map, the queued ones also in FIFO order; one mutex.
 class MemoryJobStore : public JobStore {
  public:
-  bool insert(const JobRecord& job, std::size_t max_unfinished) override;
+  /// An empty store that holds within `limits`.
+  explicit MemoryJobStore(JobStorageLimits limits = {}) : limits_(limits) {}
+
+  JobAdmission insert(const JobRecord& job, std::size_t max_unfinished) override;
   std::optional<JobRecord> find(const std::string& id) override;
   std::optional<JobRecord> claim_next(std::int64_t now_ms) override;
   bool finish(const std::string& id, JobStatus status, const std::optional<JobResult>& result,
@@ -26,9 +30,21 @@ class MemoryJobStore : public JobStore {
   std::size_t count_unfinished() override;
 
  private:
+  struct Entry {
+    JobRecord job;
+    std::uint64_t order = 0;  // insertion order: breaks ties of finished_at_ms as SQLite's rowid does
+  };
+  // Evicts the oldest finished jobs (other than `keep`) of `client`, then of everyone,
+  // until the store is within limits_.
+  void evict_over_limits(const std::string& client, const std::string& keep);
+  void evict_within(const std::string* client, const std::string& keep, std::size_t max_bytes,
+                    std::size_t max_finished);
+
+  const JobStorageLimits limits_;
   std::mutex mutex_;
-  std::unordered_map<std::string, JobRecord> jobs_;
+  std::unordered_map<std::string, Entry> jobs_;
   std::deque<std::string> queue_;  // ids in submission order; a cancelled one is skipped when reached
+  std::uint64_t next_order_ = 0;
 };
 
 }  // namespace implicitizer::server

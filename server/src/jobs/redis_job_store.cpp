@@ -16,19 +16,91 @@ const std::string kFinished = std::string(kPrefix) + "jobs:finished";
 std::string job_key(const std::string& id) { return std::string(kPrefix) + "job:" + id; }
 std::string client_key(const std::string& client) { return std::string(kPrefix) + "client:" + client; }
 
-// ARGV: prefix, id, queued ("1"/"0"), finished_at_ms, client, max_unfinished, then
-// field/value pairs. Returns 0 (nothing written) when a queued job's client is at its cap.
-constexpr const char* kInsert = R"(
-local key = ARGV[1] .. 'job:' .. ARGV[2]
-local client = ARGV[1] .. 'client:' .. ARGV[5]
-if ARGV[3] == '1' and redis.call('SCARD', client) >= tonumber(ARGV[6]) then return 0 end
-redis.call('HSET', key, unpack(ARGV, 7))
-if ARGV[3] == '1' then
-  redis.call('LPUSH', KEYS[1], ARGV[2])
-  redis.call('SADD', client, ARGV[2])
-else
-  redis.call('ZADD', KEYS[2], ARGV[4], ARGV[2])
+// Lua shared by the scripts that change what the store holds. Byte counters per
+// client and in total, of unfinished (`ubytes:`) and finished (`fbytes:`) jobs, each
+// job's own count in its `bytes` field; `finished:PEER` is a client's finished ids
+// by finishing time. evict() applies JobStorageLimits: the oldest finished jobs but
+// `keep` go while a client's, then everyone's, finished jobs or bytes pass a cap
+// (`limits`: finished per client, bytes per client, finished, bytes).
+const std::string kStorage = R"(
+local function num(v) return tonumber(v) or 0 end
+local function drop(prefix, finished, id)
+  local key = prefix .. 'job:' .. id
+  local client = redis.call('HGET', key, 'client')
+  local bytes = num(redis.call('HGET', key, 'bytes'))
+  if client then
+    redis.call('DECRBY', prefix .. 'fbytes:' .. client, bytes)
+    redis.call('ZREM', prefix .. 'finished:' .. client, id)
+  end
+  redis.call('DECRBY', prefix .. 'jobs:fbytes', bytes)
+  redis.call('ZREM', finished, id)
+  redis.call('DEL', key)
 end
+local function evict_from(prefix, finished, set, keep, ukey, fkey, max_count, max_bytes)
+  while true do
+    local count = redis.call('ZCARD', set)
+    local bytes = num(redis.call('GET', ukey)) + num(redis.call('GET', fkey))
+    if count <= max_count and bytes <= max_bytes then return end
+    local oldest = redis.call('ZRANGE', set, 0, 1)
+    local victim = oldest[1]
+    if victim == keep then victim = oldest[2] end
+    if not victim then return end
+    drop(prefix, finished, victim)
+  end
+end
+local function evict(prefix, finished, client, keep, limits)
+  evict_from(prefix, finished, prefix .. 'finished:' .. client, keep, prefix .. 'ubytes:' .. client,
+             prefix .. 'fbytes:' .. client, limits[1], limits[2])
+  evict_from(prefix, finished, finished, keep, prefix .. 'jobs:ubytes', prefix .. 'jobs:fbytes', limits[3], limits[4])
+end
+local function limits_at(i)
+  return {tonumber(ARGV[i]), tonumber(ARGV[i + 1]), tonumber(ARGV[i + 2]), tonumber(ARGV[i + 3])}
+end
+-- Moves `id` (hash `key`) from the list `from` to the finished sets as `status` at
+-- `at`, out of its client's unfinished set, its request dropped (a result never
+-- needs it again) and its bytes now `bytes`; returns its client.
+local function settle(prefix, key, id, from, finished, status, at, bytes)
+  local client = redis.call('HGET', key, 'client')
+  local old = num(redis.call('HGET', key, 'bytes'))
+  redis.call('HSET', key, 'status', status, 'finished_at_ms', at, 'request', '', 'bytes', bytes)
+  redis.call('LREM', from, 0, id)
+  redis.call('SREM', prefix .. 'client:' .. client, id)
+  redis.call('DECRBY', prefix .. 'ubytes:' .. client, old)
+  redis.call('DECRBY', prefix .. 'jobs:ubytes', old)
+  redis.call('INCRBY', prefix .. 'fbytes:' .. client, bytes)
+  redis.call('INCRBY', prefix .. 'jobs:fbytes', bytes)
+  redis.call('ZADD', finished, at, id)
+  redis.call('ZADD', prefix .. 'finished:' .. client, at, id)
+  return client
+end
+)";
+
+// KEYS: queue, finished. ARGV: prefix, id, queued ("1"/"0"), finished_at_ms, client,
+// max_unfinished, bytes, the four limits, then field/value pairs. Returns 1 when
+// inserted; else nothing is written and 0 (the client's job cap), 2 (its byte cap)
+// or 3 (the store's byte cap).
+const std::string kInsert = kStorage + R"(
+local prefix, id, client, bytes = ARGV[1], ARGV[2], ARGV[5], tonumber(ARGV[7])
+local key = prefix .. 'job:' .. id
+local limits = limits_at(8)
+if ARGV[3] == '1' then
+  if redis.call('SCARD', prefix .. 'client:' .. client) >= tonumber(ARGV[6]) then return 0 end
+  if num(redis.call('GET', prefix .. 'ubytes:' .. client)) + bytes > limits[2] then return 2 end
+  if num(redis.call('GET', prefix .. 'jobs:ubytes')) + bytes > limits[4] then return 3 end
+end
+redis.call('HSET', key, 'bytes', bytes, unpack(ARGV, 12))
+if ARGV[3] == '1' then
+  redis.call('LPUSH', KEYS[1], id)
+  redis.call('SADD', prefix .. 'client:' .. client, id)
+  redis.call('INCRBY', prefix .. 'ubytes:' .. client, bytes)
+  redis.call('INCRBY', prefix .. 'jobs:ubytes', bytes)
+else
+  redis.call('ZADD', KEYS[2], ARGV[4], id)
+  redis.call('ZADD', prefix .. 'finished:' .. client, ARGV[4], id)
+  redis.call('INCRBY', prefix .. 'fbytes:' .. client, bytes)
+  redis.call('INCRBY', prefix .. 'jobs:fbytes', bytes)
+end
+evict(prefix, KEYS[2], client, id, limits)
 return 1)";
 
 // KEYS: queue, running. ARGV: prefix, now_ms, lease_until_ms. Returns the id or nil.
@@ -45,49 +117,37 @@ while true do
   redis.call('LREM', KEYS[2], 0, id)
 end)";
 
-// Lua shared by the scripts that end a job: moves `id` (hash `key`) from the list
-// `from` to the finished set as `status` at `at`, and out of its client's set.
-const std::string kSettle = R"(
-local function settle(prefix, key, id, from, finished, status, at)
-  redis.call('HSET', key, 'status', status, 'finished_at_ms', at)
-  redis.call('LREM', from, 0, id)
-  redis.call('SREM', prefix .. 'client:' .. redis.call('HGET', key, 'client'), id)
-  redis.call('ZADD', finished, at, id)
-end
-)";
-
 // KEYS: running, finished. ARGV: prefix, id, status, finished_at_ms, has_result,
-// http_status, content_type, headers, body.
-const std::string kFinish = kSettle + R"(
+// http_status, content_type, headers, body, the result's bytes, the four limits.
+const std::string kFinish = kStorage + R"(
 local key = ARGV[1] .. 'job:' .. ARGV[2]
 if redis.call('HGET', key, 'status') ~= 'running' then return 0 end
 if ARGV[5] == '1' then
   redis.call('HSET', key, 'http_status', ARGV[6], 'content_type', ARGV[7], 'headers', ARGV[8], 'body', ARGV[9])
 end
-settle(ARGV[1], key, ARGV[2], KEYS[1], KEYS[2], ARGV[3], ARGV[4])
+local client = settle(ARGV[1], key, ARGV[2], KEYS[1], KEYS[2], ARGV[3], ARGV[4], tonumber(ARGV[10]))
+evict(ARGV[1], KEYS[2], client, ARGV[2], limits_at(11))
 return 1)";
 
-// KEYS: queue, finished. ARGV: prefix, id, finished_at_ms.
-const std::string kCancelQueued = kSettle + R"(
+// KEYS: queue, finished. ARGV: prefix, id, finished_at_ms, the four limits.
+const std::string kCancelQueued = kStorage + R"(
 local key = ARGV[1] .. 'job:' .. ARGV[2]
 if redis.call('HGET', key, 'status') ~= 'queued' then return 0 end
-settle(ARGV[1], key, ARGV[2], KEYS[1], KEYS[2], 'cancelled', ARGV[3])
+local client = settle(ARGV[1], key, ARGV[2], KEYS[1], KEYS[2], 'cancelled', ARGV[3], 0)
+evict(ARGV[1], KEYS[2], client, ARGV[2], limits_at(4))
 return 1)";
 
 // KEYS: finished. ARGV: prefix, id.
-constexpr const char* kRemoveFinished = R"(
-local key = ARGV[1] .. 'job:' .. ARGV[2]
-local status = redis.call('HGET', key, 'status')
+const std::string kRemoveFinished = kStorage + R"(
+local status = redis.call('HGET', ARGV[1] .. 'job:' .. ARGV[2], 'status')
 if status ~= 'done' and status ~= 'failed' and status ~= 'cancelled' then return 0 end
-redis.call('DEL', key)
-redis.call('ZREM', KEYS[1], ARGV[2])
+drop(ARGV[1], KEYS[1], ARGV[2])
 return 1)";
 
 // KEYS: finished. ARGV: prefix, cutoff_ms.
-constexpr const char* kRemoveBefore = R"(
+const std::string kRemoveBefore = kStorage + R"(
 local ids = redis.call('ZRANGEBYSCORE', KEYS[1], '-inf', '(' .. ARGV[2])
-for _, id in ipairs(ids) do redis.call('DEL', ARGV[1] .. 'job:' .. id) end
-redis.call('ZREMRANGEBYSCORE', KEYS[1], '-inf', '(' .. ARGV[2])
+for _, id in ipairs(ids) do drop(ARGV[1], KEYS[1], id) end
 return #ids)";
 
 // ARGV: prefix, id.
@@ -106,9 +166,9 @@ redis.call('HSET', key, 'lease_until_ms', ARGV[3], unpack(ARGV, 4))
 if redis.call('HGET', key, 'cancel_requested') == '1' then return 1 end
 return 0)";
 
-// KEYS: running, queue, finished. ARGV: prefix, now_ms. A job whose lease ran out
-// goes back to the head of the queue (or is cancelled, if that was asked).
-const std::string kRequeueExpired = kSettle + R"(
+// KEYS: running, queue, finished. ARGV: prefix, now_ms, the four limits. A job whose
+// lease ran out goes back to the head of the queue (or is cancelled, if that was asked).
+const std::string kRequeueExpired = kStorage + R"(
 local n = 0
 for _, id in ipairs(redis.call('LRANGE', KEYS[1], 0, -1)) do
   local key = ARGV[1] .. 'job:' .. id
@@ -116,7 +176,8 @@ for _, id in ipairs(redis.call('LRANGE', KEYS[1], 0, -1)) do
     redis.call('LREM', KEYS[1], 0, id)
   elseif tonumber(redis.call('HGET', key, 'lease_until_ms') or '0') < tonumber(ARGV[2]) then
     if redis.call('HGET', key, 'cancel_requested') == '1' then
-      settle(ARGV[1], key, id, KEYS[1], KEYS[3], 'cancelled', ARGV[2])
+      local client = settle(ARGV[1], key, id, KEYS[1], KEYS[3], 'cancelled', ARGV[2], 0)
+      evict(ARGV[1], KEYS[3], client, id, limits_at(3))
     else
       redis.call('LREM', KEYS[1], 0, id)
       redis.call('HSET', key, 'status', 'queued', 'lease_until_ms', '0')
@@ -175,21 +236,36 @@ JobRecord job_of(const std::string& id, const std::map<std::string, std::string>
 
 }  // namespace
 
-RedisJobStore::RedisJobStore(std::string host, int port, std::chrono::milliseconds lease)
-    : lease_ms_(lease.count()), redis_(std::move(host), port) {}
+RedisJobStore::RedisJobStore(std::string host, int port, std::chrono::milliseconds lease, JobStorageLimits limits)
+    : lease_ms_(lease.count()), limits_(limits), redis_(std::move(host), port) {}
 
-bool RedisJobStore::insert(const JobRecord& job, std::size_t max_unfinished) {
+std::vector<std::string> RedisJobStore::append_limits(std::vector<std::string> args) const {
+  for (const std::size_t cap :
+       {limits_.max_finished_per_client, limits_.max_bytes_per_client, limits_.max_finished, limits_.max_bytes}) {
+    args.push_back(std::to_string(cap));
+  }
+  return args;
+}
+
+JobAdmission RedisJobStore::insert(const JobRecord& job, std::size_t max_unfinished) {
   const bool queued = job.status == JobStatus::queued;
+  JobRecord stored = job;
+  if (!queued) stored.request.clear();  // a finished job keeps no request
   std::vector<std::string> args{kPrefix,
                                 job.id,
                                 queued ? "1" : "0",
                                 std::to_string(job.finished_at_ms),
                                 job.client,
                                 std::to_string(max_unfinished),
+                                std::to_string(job_stored_bytes(stored)),
+                                std::to_string(limits_.max_finished_per_client),
+                                std::to_string(limits_.max_bytes_per_client),
+                                std::to_string(limits_.max_finished),
+                                std::to_string(limits_.max_bytes),
                                 "kind",
                                 job.kind,
                                 "request",
-                                job.request,
+                                stored.request,
                                 "client",
                                 job.client,
                                 "status",
@@ -206,7 +282,16 @@ bool RedisJobStore::insert(const JobRecord& job, std::size_t max_unfinished) {
         "headers",     join_headers(job.result->headers),       "body",         job.result->body};
     args.insert(args.end(), result.begin(), result.end());
   }
-  return redis_.eval_integer(kInsert, {kQueue, kFinished}, args) == 1;
+  switch (redis_.eval_integer(kInsert, {kQueue, kFinished}, args)) {
+    case 1:
+      return JobAdmission::admitted;
+    case 2:
+      return JobAdmission::client_bytes_cap;
+    case 3:
+      return JobAdmission::store_bytes_cap;
+    default:
+      return JobAdmission::client_job_cap;
+  }
 }
 
 std::optional<JobRecord> RedisJobStore::find(const std::string& id) {
@@ -229,16 +314,24 @@ std::optional<JobRecord> RedisJobStore::claim_next(std::int64_t now_ms) {
 
 bool RedisJobStore::finish(const std::string& id, JobStatus status, const std::optional<JobResult>& result,
                            std::int64_t finished_at_ms) {
+  JobRecord settled;
+  settled.result = result;
   std::vector<std::string> args{kPrefix, id, to_string(status), std::to_string(finished_at_ms), result ? "1" : "0"};
   if (result) {
     args.insert(args.end(), {std::to_string(result->http_status), result->content_type, join_headers(result->headers),
                              result->body});
+  } else {
+    args.insert(args.end(), 4, std::string());
   }
+  args.push_back(std::to_string(job_stored_bytes(settled)));
+  args = append_limits(std::move(args));
   return redis_.eval_integer(kFinish, {kRunning, kFinished}, args) == 1;
 }
 
 bool RedisJobStore::cancel_queued(const std::string& id, std::int64_t finished_at_ms) {
-  return redis_.eval_integer(kCancelQueued, {kQueue, kFinished}, {kPrefix, id, std::to_string(finished_at_ms)}) == 1;
+  std::vector<std::string> args{kPrefix, id, std::to_string(finished_at_ms)};
+  args = append_limits(std::move(args));
+  return redis_.eval_integer(kCancelQueued, {kQueue, kFinished}, args) == 1;
 }
 
 bool RedisJobStore::remove_finished(const std::string& id) {
@@ -285,8 +378,8 @@ bool RedisJobStore::heartbeat(const std::string& id, const JobProgressView& prog
 }
 
 std::size_t RedisJobStore::requeue_expired(std::int64_t now_ms) {
-  return static_cast<std::size_t>(
-      redis_.eval_integer(kRequeueExpired, {kRunning, kQueue, kFinished}, {kPrefix, std::to_string(now_ms)}));
+  return static_cast<std::size_t>(redis_.eval_integer(kRequeueExpired, {kRunning, kQueue, kFinished},
+                                                      append_limits({kPrefix, std::to_string(now_ms)})));
 }
 
 }  // namespace implicitizer::server

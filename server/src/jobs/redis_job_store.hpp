@@ -10,7 +10,10 @@
 /// Keys (prefix `implicitizer:`): `job:ID` a hash per job (fields of JobRecord, the
 /// published progress `p_*`, `lease_until_ms`, `cancel_requested`); `jobs:queue` and
 /// `jobs:running` lists of ids; `jobs:finished` a sorted set of ids by finishing time
-/// (for the TTL); `client:PEER` the set of a client's unfinished ids (for its cap).
+/// (for the TTL); `client:PEER` the set of a client's unfinished ids (for its cap);
+/// for JobStorageLimits, `finished:PEER` a client's finished ids by finishing time and
+/// byte counters `ubytes:PEER`, `fbytes:PEER`, `jobs:ubytes`, `jobs:fbytes` (unfinished
+/// and finished jobs' bytes, a client's and everyone's).
 
 #include <chrono>
 #include <cstdint>
@@ -26,11 +29,12 @@ namespace implicitizer::server {
 class RedisJobStore : public JobStore {
  public:
   /// Connects to `host`:`port` and checks it answers; `lease` is how long a claimed
-  /// job stays with its replica without a heartbeat. Throws std::runtime_error when
-  /// Redis cannot be reached.
-  RedisJobStore(std::string host, int port, std::chrono::milliseconds lease);
+  /// job stays with its replica without a heartbeat; holds within `limits` (every
+  /// replica should give the same). Throws std::runtime_error when Redis cannot be
+  /// reached.
+  RedisJobStore(std::string host, int port, std::chrono::milliseconds lease, JobStorageLimits limits = {});
 
-  bool insert(const JobRecord& job, std::size_t max_unfinished) override;
+  JobAdmission insert(const JobRecord& job, std::size_t max_unfinished) override;
   std::optional<JobRecord> find(const std::string& id) override;
   std::optional<JobRecord> claim_next(std::int64_t now_ms) override;
   bool finish(const std::string& id, JobStatus status, const std::optional<JobResult>& result,
@@ -45,7 +49,11 @@ class RedisJobStore : public JobStore {
   std::size_t requeue_expired(std::int64_t now_ms) override;
 
  private:
+  // `args` and then the four limits, in the order the scripts' limits_at() reads them.
+  std::vector<std::string> append_limits(std::vector<std::string> args) const;
+
   const std::int64_t lease_ms_;
+  const JobStorageLimits limits_;
   RedisConnection redis_;
 };
 
