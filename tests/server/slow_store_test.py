@@ -154,8 +154,8 @@ def test_sqlite_locked():
         lock.rollback()
         lock.close()
         lock = None
-        status, _, _ = s.request("GET", "/v1/jobs/" + job_id)
-        check(status == 200, "the job answers once the file is free: %s" % status)
+        status, _, body = s.request("GET", "/v1/jobs/" + job_id)
+        check(status == 200, "the job answers once the file is free: %s %r" % (status, body[:300]))
     finally:
         if lock is not None:
             lock.close()

@@ -187,6 +187,7 @@ SqliteJobStore::SqliteJobStore(const std::string& path, JobStorageLimits limits)
     requeue.step();
     requeued_at_open_ = requeue.changes();
     count_usage();
+    header_fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     header_at_open_ = has_sqlite_header();
     for (const char* suffix : {"", "-wal", "-shm"}) {
       struct stat st {};
@@ -194,14 +195,16 @@ SqliteJobStore::SqliteJobStore(const std::string& path, JobStorageLimits limits)
       if (::stat(file.c_str(), &st) == 0) files_.push_back(FileIdentity{file, st.st_dev, st.st_ino});
     }
   } catch (...) {
-    sqlite3_close(db_);
-    ::close(lock_fd_);
+    close_files();
     throw;
   }
 }
 
-SqliteJobStore::~SqliteJobStore() {
+SqliteJobStore::~SqliteJobStore() { close_files(); }
+
+void SqliteJobStore::close_files() {
   sqlite3_close(db_);
+  if (header_fd_ >= 0) ::close(header_fd_);
   ::close(lock_fd_);
 }
 
@@ -236,10 +239,8 @@ bool SqliteJobStore::has_sqlite_header() const {
   // SQLite's own magic string, the first 16 bytes of every database file.
   static constexpr char kMagic[] = "SQLite format 3";
   char header[sizeof kMagic] = {};
-  const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return false;
-  const ssize_t n = ::pread(fd, header, sizeof header, 0);
-  ::close(fd);
+  if (header_fd_ < 0) return false;
+  const ssize_t n = ::pread(header_fd_, header, sizeof header, 0);
   return n == static_cast<ssize_t>(sizeof header) && std::equal(header, header + sizeof header, kMagic);
 }
 

@@ -86,6 +86,8 @@ class SqliteJobStore : public JobStore {
   // file no longer starts with SQLite's header.
   void check_files();
   bool has_sqlite_header() const;
+  // Closes the connection, then the header's and the lock's descriptors.
+  void close_files();
   // Throws `message`, and logs it the first time.
   [[noreturn]] void refuse_to_work(const std::string& message);
 
@@ -93,6 +95,11 @@ class SqliteJobStore : public JobStore {
   const JobStorageLimits limits_;
   std::mutex mutex_;
   int lock_fd_ = -1;
+  // The database file, opened once to read its header: closing a descriptor of the
+  // file would drop every POSIX lock this process holds on it, SQLite's included
+  // (another process would then think itself the last and delete the WAL). Closed
+  // after SQLite's connection.
+  int header_fd_ = -1;
   sqlite3* db_ = nullptr;
   std::vector<FileIdentity> files_;
   std::map<std::string, Usage> usage_;
