@@ -499,6 +499,17 @@ def test_sqlite_deleted_file_is_503(binary):
         status, _, data = submit(s, "groebner", SMALL)
         check(status == 503 and error_code(data) == "job_store_unavailable", "and refuses jobs: %s %r" % (status, data))
         check("was deleted or replaced" in s.log_text(), "the log says the file went")
+        # The job threads' claims fail once a second from now on: their log names the
+        # store, once, and counts the repeats instead of writing each.
+        def claim_lines():
+            return [line for line in s.log_text().splitlines()
+                    if line.startswith("implicitizer-server: job threads: SQLite job store " + path)
+                    and "was deleted or replaced" in line]
+        end = time.monotonic() + FINISH_DEADLINE_S
+        while not claim_lines() and time.monotonic() < end:
+            time.sleep(0.05)
+        time.sleep(3.5)  # room for three more claims to fail (fewer on a slow machine)
+        check(len(claim_lines()) == 1, "the job threads log the lost file once: %r" % claim_lines())
     finally:
         close_showing_log(s, CHECKS)
         shutil.rmtree(base, ignore_errors=True)

@@ -18,16 +18,9 @@ Response make_jobs_disabled() {
   return make_error_response(http::status::not_found, "not_found", "this server runs no jobs");
 }
 
-// "SQLite job store /path", "Redis job store host:port": what an error names, so
-// that an operator reading a 503 or the log knows which store to look at.
-std::string describe_store(const std::string& store) {
-  if (store.rfind("sqlite:", 0) == 0) return "SQLite job store " + store.substr(7);
-  if (store.rfind("redis://", 0) == 0) return "Redis job store " + store.substr(8);
-  return "job store " + store;
-}
-
 // A store that cannot answer (Redis down, a disk error, a file another process has
-// locked) is the server's trouble, not the request's: 503. `answer` runs as a
+// locked) is the server's trouble, not the request's: 503, naming the store, so that
+// an operator reading it or the log knows which store to look at. `answer` runs as a
 // StoreCall, on the store executor: however long the store takes, no network thread
 // waits for it.
 template <typename Answer>
@@ -37,7 +30,7 @@ HandlerResult answer_with_store(const HandlerContext& context, Answer answer) {
     try {
       return answer(*context.jobs);
     } catch (const std::exception& e) {
-      const std::string why = describe_store(context.config.store) + ": " + e.what();
+      const std::string why = describe_job_store(context.config.store) + ": " + e.what();
       std::cerr << "implicitizer-server: " + why + "\n" << std::flush;
       Response response = make_error_response(http::status::service_unavailable, "job_store_unavailable",
                                               "the job store cannot answer: " + why);

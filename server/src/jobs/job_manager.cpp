@@ -279,7 +279,21 @@ void JobManager::beat() {
 }
 
 void JobManager::report_store_error(const std::exception& e) {
-  std::cerr << std::string("implicitizer-server: job store: ") + e.what() + "\n" << std::flush;
+  const std::string message = describe_job_store(server_config_.store) + ": " + e.what();
+  const auto now = std::chrono::steady_clock::now();
+  std::lock_guard lock(report_mutex_);
+  if (message == last_store_error_ && now - last_store_error_logged_at_ < kRepeatedErrorQuiet) {
+    ++store_error_repeats_;
+    return;
+  }
+  std::string line = "implicitizer-server: job threads: " + message;
+  if (store_error_repeats_ > 0) {
+    line += " (the previous error came " + std::to_string(store_error_repeats_) + " more times)";
+  }
+  std::cerr << line + "\n" << std::flush;
+  last_store_error_ = message;
+  last_store_error_logged_at_ = now;
+  store_error_repeats_ = 0;
 }
 
 Response JobManager::result(const std::string& id) {

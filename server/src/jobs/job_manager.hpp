@@ -95,7 +95,11 @@ class JobManager {
   static JobProgressView read_progress(const Live& live);
   // Once a second at most: drops expired results, queues again jobs whose lease ended.
   void tidy_store();
-  static void report_store_error(const std::exception& e);
+  // Logs a store error of the job threads, naming the store; the same message again
+  // within kRepeatedErrorQuiet is counted, not logged (a store that is gone fails
+  // every claim, once a second).
+  void report_store_error(const std::exception& e);
+  static constexpr std::chrono::seconds kRepeatedErrorQuiet{60};
 
   const ServerConfig& server_config_;
   ServerConfig job_config_;  // the server's, with the job time limit as timeout cap and default
@@ -103,6 +107,11 @@ class JobManager {
   std::map<std::string, KindHandler> kinds_;
   std::unique_ptr<JobStore> store_;
   MetricsRegistry& metrics_;
+
+  std::mutex report_mutex_;  // guards the three below
+  std::string last_store_error_;
+  std::chrono::steady_clock::time_point last_store_error_logged_at_;
+  std::size_t store_error_repeats_ = 0;
 
   std::mutex mutex_;
   std::condition_variable wake_;

@@ -14,6 +14,14 @@
 
 namespace implicitizer::server {
 
+/// What messages call the store `spec` (--store): "SQLite job store PATH", "Redis job
+/// store HOST:PORT", "memory job store".
+inline std::string describe_job_store(const std::string& spec) {
+  if (spec.rfind("sqlite:", 0) == 0) return "SQLite job store " + spec.substr(7);
+  if (spec.rfind("redis://", 0) == 0) return "Redis job store " + spec.substr(8);
+  return spec + " job store";
+}
+
 /// The jobs of one server (or of several replicas sharing a store). A store holds
 /// within the JobStorageLimits it was made with: the insert, finish or cancel that
 /// passes a cap evicts the oldest finished jobs (never the job it acts on) in the
