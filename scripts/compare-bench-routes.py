@@ -8,7 +8,7 @@ geometric mean of the ratios per route, and whether the columns that are not tim
 the builds in every run. Compare ratios, not times across runs.
 Usage: scripts/compare-bench-routes.py OLD/bin/implicitizer-bench NEW/bin/implicitizer-bench RUNS [BENCH FLAGS]
 (for example --suite public --budget 20; --routes --markdown --no-singular are added).
-docs/benchmarks.md has a run (issue 17: one lift across primes)."""
+Its runs for issue 17 (one lift across primes) are in the history of docs/benchmarks.md."""
 
 import re
 import statistics

@@ -5,7 +5,7 @@ binaries alternating, RUNS times each; prints the median of `stats.modular.lift_
 (the Chinese remaindering and reconstruction) and the counts of primes, lifted primes
 and reconstructions each build used.
 Usage: scripts/compare-lift-ms.py OLD/bin/implicitizer NEW/bin/implicitizer RUNS NAME...
-docs/benchmarks.md has a run (issue 17: one lift across primes)."""
+Its run for issue 17 (one lift across primes) is in the history of docs/benchmarks.md."""
 
 import json
 import os

@@ -119,7 +119,7 @@ std::optional<ImplicitizeResult> modular_groebner_route(const Parametrization& p
   modular.buchberger = {params.buchberger, params.budget};
   modular.prove = false;
   // F4 modulo each prime: faster than Buchberger modulo p on every surface that takes
-  // more than a second (docs/benchmarks.md, "The elimination route on F4").
+  // more than a second (the run is in the history of docs/benchmarks.md).
   modular.algorithm = ModularAlgorithm::f4;
   modular.lift_only_free_of_first = ideal.eliminated.size();
   ModularGroebnerStats stats;

@@ -33,8 +33,8 @@ void write_milliseconds(Writer& w, double ms) { w.Double(std::isfinite(ms) && ms
 void write_polynomials(Writer& w, const std::vector<Polynomial>& polynomials) {
   // Printing a coefficient takes a gcd with the content's denominator (printer.cpp),
   // and a reduced basis can run to tens of thousands of terms: a large answer is
-  // printed on two threads, every other polynomial each (docs/benchmarks.md, "Then:
-  // followers, the candidate in integers, the basis printed on two threads").
+  // printed on two threads, every other polynomial each (docs/benchmarks.md, "Where it
+  // stands: followers, the candidate in integers, the basis printed on two threads").
   std::size_t terms = 0;
   for (const Polynomial& p : polynomials) terms += p.num_terms();
   const std::size_t threads = terms >= kTermsWorthAThread ? 2 : 1;
