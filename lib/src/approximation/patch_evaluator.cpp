@@ -14,7 +14,32 @@ DoublePolynomial::DoublePolynomial(const Polynomial& p) : variables_(p.ring()->n
     exponents_.insert(exponents_.end(), e.begin(), e.end());
     for (std::int32_t k : e) stride_ = std::max(stride_, std::size_t(k) + 1);
   }
+  power_index_.reserve(exponents_.size());
+  for (std::size_t i = 0; i < exponents_.size(); ++i) {
+    power_index_.push_back(static_cast<std::uint32_t>((i % variables_) * stride_ + std::size_t(exponents_[i])));
+  }
 }
+
+namespace {
+
+// Σ c_t·Π_v powers[index[t·n + v]] over n variables (n = V, or `variables` when V is
+// 0), the factors multiplied in the order of the variables whatever V: with V known,
+// the compiler unrolls the product (the approximation's measurements evaluate in
+// three variables and the patch in two).
+template <std::size_t V>
+double sum_of_terms(const std::vector<double>& coefficients, const std::uint32_t* index, const double* powers,
+                    std::size_t variables) {
+  const std::size_t n = V == 0 ? variables : V;
+  double sum = 0;
+  for (std::size_t t = 0; t < coefficients.size(); ++t) {
+    double term = coefficients[t];
+    for (std::size_t v = 0; v < n; ++v) term *= powers[index[t * n + v]];
+    sum += term;
+  }
+  return sum;
+}
+
+}  // namespace
 
 template <typename Use>
 double DoublePolynomial::with_powers(const double* x, Use use) const {
@@ -33,37 +58,45 @@ double DoublePolynomial::with_powers(const double* x, Use use) const {
 
 double DoublePolynomial::value(const double* x) const {
   return with_powers(x, [&](const double* powers) {
-    double sum = 0;
-    for (std::size_t t = 0; t < coefficients_.size(); ++t) {
-      double term = coefficients_[t];
-      for (std::size_t v = 0; v < variables_; ++v) term *= powers[v * stride_ + exponents_[t * variables_ + v]];
-      sum += term;
-    }
-    return sum;
+    const std::uint32_t* index = power_index_.data();
+    if (variables_ == 3) return sum_of_terms<3>(coefficients_, index, powers, 3);
+    if (variables_ == 2) return sum_of_terms<2>(coefficients_, index, powers, 2);
+    return sum_of_terms<0>(coefficients_, index, powers, variables_);
   });
 }
 
 double DoublePolynomial::value_and_gradient(const double* x, double* gradient) const {
   for (std::size_t v = 0; v < variables_; ++v) gradient[v] = 0;
   return with_powers(x, [&](const double* powers) {
-    double sum = 0;
-    for (std::size_t t = 0; t < coefficients_.size(); ++t) {
-      const std::int32_t* e = exponents_.data() + t * variables_;
-      double term = coefficients_[t];
-      for (std::size_t v = 0; v < variables_; ++v) term *= powers[v * stride_ + e[v]];
-      sum += term;
-      for (std::size_t v = 0; v < variables_; ++v) {
-        if (e[v] == 0) continue;
-        // ∂/∂x_v of c·Π x^e: the same product with x_v^(e_v − 1), times e_v.
-        double d = coefficients_[t] * e[v] * powers[v * stride_ + e[v] - 1];
-        for (std::size_t w = 0; w < variables_; ++w) {
-          if (w != v) d *= powers[w * stride_ + e[w]];
-        }
-        gradient[v] += d;
-      }
-    }
-    return sum;
+    if (variables_ == 3) return terms_and_gradient<3>(powers, gradient);
+    if (variables_ == 2) return terms_and_gradient<2>(powers, gradient);
+    return terms_and_gradient<0>(powers, gradient);
   });
+}
+
+template <std::size_t V>
+double DoublePolynomial::terms_and_gradient(const double* powers, double* gradient) const {
+  // V = 0: any number of variables, read at run time.
+  const std::size_t n = V == 0 ? variables_ : V;
+  const std::uint32_t* index = power_index_.data();
+  double sum = 0;
+  for (std::size_t t = 0; t < coefficients_.size(); ++t) {
+    const std::int32_t* e = exponents_.data() + t * n;
+    const std::uint32_t* at = index + t * n;
+    double term = coefficients_[t];
+    for (std::size_t v = 0; v < n; ++v) term *= powers[at[v]];
+    sum += term;
+    for (std::size_t v = 0; v < n; ++v) {
+      if (e[v] == 0) continue;
+      // ∂/∂x_v of c·Π x^e: the same product with x_v^(e_v − 1), times e_v.
+      double d = coefficients_[t] * e[v] * powers[at[v] - 1];
+      for (std::size_t w = 0; w < n; ++w) {
+        if (w != v) d *= powers[at[w]];
+      }
+      gradient[v] += d;
+    }
+  }
+  return sum;
 }
 
 FramedPolynomial::FramedPolynomial(const Polynomial& q, const Frame& frame) : frame_(frame) {

@@ -4,6 +4,7 @@
 // derivatives. The exact half (certificate.cpp) never uses these.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -31,11 +32,16 @@ class DoublePolynomial {
   // approximation's time).
   template <typename Use>
   double with_powers(const double* x, Use use) const;
+  // value_and_gradient's sum over the terms, for V variables (0: variables_).
+  template <std::size_t V>
+  double terms_and_gradient(const double* powers, double* gradient) const;
 
   std::size_t variables_ = 0;
   std::size_t stride_ = 1;  // the largest exponent + 1
   std::vector<double> coefficients_;
   std::vector<std::int32_t> exponents_;  // variables_ per term
+  // v·stride_ + e_v per term and variable: where value() reads each factor's power.
+  std::vector<std::uint32_t> power_index_;
 };
 
 /// Frame coordinates u = (x − center)/half, dyadic (exact doubles).
