@@ -155,15 +155,15 @@ SurfaceToPatch measure_kept_zeros(const Context& ctx, const FramedPolynomial& q,
                                   const Frame& frame, const PieceTrimRegion& region, bool& polytope_kept) {
   polytope_kept = false;
   const double reach = 0.1 * frame.half;
+  TubeSample tube(ctx.patch, q, rect, ctx.domain, reach, ctx.budget);
   SurfaceToPatch in_polytope;
   if (region.polytope) {
-    in_polytope = measure_polytope_to_patch(ctx.patch, q, *region.polytope, region.lo, region.hi, rect, ctx.domain,
-                                            reach, ctx.budget);
+    in_polytope = measure_polytope_to_patch(tube, q, *region.polytope, region.lo, region.hi, ctx.budget);
     polytope_kept = in_polytope.samples > 0 && in_polytope.distance <= kMeasuredMargin * ctx.target &&
                     in_polytope.beyond_piece <= reach;
     if (polytope_kept) return in_polytope;
   }
-  SurfaceToPatch in_tube = measure_surface_to_patch(ctx.patch, q, rect, ctx.domain, reach, ctx.budget);
+  SurfaceToPatch in_tube = measure_surface_to_patch(tube);
   // Reported when neither is kept: the nearer miss.
   if (!(in_tube.distance <= kMeasuredMargin * ctx.target) && in_polytope.samples > 0 &&
       in_polytope.distance < in_tube.distance) {

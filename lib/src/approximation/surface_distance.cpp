@@ -28,12 +28,7 @@ std::optional<Point> project_onto_surface(const FramedPolynomial& q, Point p, do
   return std::nullopt;
 }
 
-struct Seeds {
-  std::vector<Point> points;
-  std::vector<std::array<double, 2>> parameters;
-};
-
-void add_seed_grid(const PatchEvaluator& patch, const ParameterRect& rect, Seeds& seeds) {
+void add_seed_grid(const PatchEvaluator& patch, const ParameterRect& rect, SeedGrid& seeds) {
   for (std::size_t i = 0; i < kSeedSide; ++i) {
     for (std::size_t j = 0; j < kSeedSide; ++j) {
       const double s = rect[0] + (rect[1] - rect[0]) * double(i) / double(kSeedSide - 1);
@@ -48,7 +43,7 @@ void add_seed_grid(const PatchEvaluator& patch, const ParameterRect& rect, Seeds
 
 // |X(s*, t*) − y| after Gauss–Newton on |X(s, t) − y|² from the nearest seed, clamped
 // to `rect`; the smallest distance met on the way.
-double distance_to_patch(const PatchEvaluator& patch, const Seeds& seeds, const ParameterRect& rect, const Point& y) {
+double distance_to_patch(const PatchEvaluator& patch, const SeedGrid& seeds, const ParameterRect& rect, const Point& y) {
   // The nearest seed by squared distance (one square root, not one per seed: this scan
   // was a quarter of an approximation's time).
   std::size_t nearest = 0;
@@ -149,28 +144,46 @@ ParameterRect widened(const ParameterRect& r) {
   return {r[0] - ws, r[1] + ws, r[2] - wt, r[3] + wt};
 }
 
-SurfaceToPatch measure_surface_to_patch(const PatchEvaluator& patch, const FramedPolynomial& q,
-                                        const ParameterRect& piece, const ParameterRect& domain, double reach,
-                                        const Budget& budget) {
-  // Seeds: a grid of S' and one of D' (S' ⊂ D'); projections stay in D'.
-  const ParameterRect whole = widened(domain);
-  Seeds near, far;
-  add_seed_grid(patch, widened(piece), near);
-  add_seed_grid(patch, whole, far);
+TubeSample::TubeSample(const PatchEvaluator& patch, const FramedPolynomial& q, const ParameterRect& piece,
+                       const ParameterRect& domain, double reach, const Budget& budget)
+    : patch_(patch), piece_(piece), whole_(widened(domain)), reach_(reach) {
+  // Seeds: grids of S, S' and D' (S ⊂ S' ⊂ D'); projections stay in D'.
+  add_seed_grid(patch, piece, own_);
+  add_seed_grid(patch, widened(piece), near_);
+  add_seed_grid(patch, whole_, far_);
+  if (!seeded()) return;
+  collect_tube_zeros(patch, q, piece, reach, budget, zeros_);
+  to_piece_.assign(zeros_.size(), std::numeric_limits<double>::quiet_NaN());
+  to_patch_.assign(zeros_.size(), std::numeric_limits<double>::quiet_NaN());
+}
+
+bool TubeSample::seeded() const { return !own_.points.empty() && !near_.points.empty() && !far_.points.empty(); }
+
+double TubeSample::to_piece(const Point& y) const { return distance_to_patch(patch_, own_, piece_, y); }
+
+double TubeSample::to_patch(const Point& y) const {
+  // Two starts: a folded patch brings another part of X(D') close, where a single
+  // projection can stop in a local minimum.
+  return std::min(distance_to_patch(patch_, near_, whole_, y), distance_to_patch(patch_, far_, whole_, y));
+}
+
+double TubeSample::zero_to_piece(std::size_t k) {
+  if (std::isnan(to_piece_[k])) to_piece_[k] = to_piece(zeros_[k]);
+  return to_piece_[k];
+}
+
+double TubeSample::zero_to_patch(std::size_t k) {
+  if (std::isnan(to_patch_[k])) to_patch_[k] = to_patch(zeros_[k]);
+  return to_patch_[k];
+}
+
+SurfaceToPatch measure_surface_to_patch(TubeSample& tube) {
   SurfaceToPatch result;
-  if (near.points.empty() || far.points.empty()) return result;
-  // The zeros farther than `reach` from X(S) are dropped below (the trimming removes
-  // them).
-  std::vector<Point> zeros;
-  collect_tube_zeros(patch, q, piece, reach, budget, zeros);
-  Seeds own;
-  add_seed_grid(patch, piece, own);
-  for (const Point& y : zeros) {
-    if (distance_to_patch(patch, own, piece, y) > reach) continue;
-    // Two starts: a folded patch brings another part of X(D') close, where a single
-    // projection can stop in a local minimum.
-    const double d = std::min(distance_to_patch(patch, near, whole, y), distance_to_patch(patch, far, whole, y));
-    result.distance = std::max(result.distance, d);
+  if (!tube.seeded()) return result;
+  // The zeros farther than `reach` from X(S) are dropped (the trimming removes them).
+  for (std::size_t k = 0; k < tube.zeros().size(); ++k) {
+    if (tube.zero_to_piece(k) > tube.reach()) continue;
+    result.distance = std::max(result.distance, tube.zero_to_patch(k));
     ++result.samples;
   }
   return result;
@@ -204,22 +217,26 @@ void axis_line_zeros(const FramedPolynomial& q, Point a, std::size_t axis, doubl
 
 }  // namespace
 
-SurfaceToPatch measure_polytope_to_patch(const PatchEvaluator& patch, const FramedPolynomial& q,
-                                         const TrimPolytope& polytope, const Point& lo, const Point& hi,
-                                         const ParameterRect& piece, const ParameterRect& domain, double reach,
-                                         const Budget& budget) {
+SurfaceToPatch measure_polytope_to_patch(TubeSample& tube, const FramedPolynomial& q, const TrimPolytope& polytope,
+                                         const Point& lo, const Point& hi, const Budget& budget) {
   constexpr std::size_t kGrid = 48;
-  const ParameterRect whole = widened(domain);
-  Seeds near, far;
-  add_seed_grid(patch, widened(piece), near);
-  add_seed_grid(patch, whole, far);
-  Seeds own;
-  add_seed_grid(patch, piece, own);
   SurfaceToPatch result;
-  if (near.points.empty() || far.points.empty() || own.points.empty()) return result;
+  if (!tube.seeded()) return result;
+  const auto inside = [&](const Point& y) {
+    const bool in_box =
+        y[0] >= lo[0] && y[0] <= hi[0] && y[1] >= lo[1] && y[1] <= hi[1] && y[2] >= lo[2] && y[2] <= hi[2];
+    return in_box && !(polytope.excess(y) > 0);
+  };
+  const auto measure = [&](double to_piece, double to_patch) {
+    result.beyond_piece = std::max(result.beyond_piece, to_piece);
+    result.distance = std::max(result.distance, to_patch);
+    ++result.samples;
+  };
   // Near the patch as the tube's measurement samples, then across the whole box.
+  for (std::size_t k = 0; k < tube.zeros().size(); ++k) {
+    if (inside(tube.zeros()[k])) measure(tube.zero_to_piece(k), tube.zero_to_patch(k));
+  }
   std::vector<Point> zeros;
-  collect_tube_zeros(patch, q, piece, reach, budget, zeros);
   for (std::size_t axis = 0; axis < 3; ++axis) {
     const std::size_t a = (axis + 1) % 3, b = (axis + 2) % 3;
     for (std::size_t i = 0; i < kGrid; ++i) {
@@ -233,13 +250,7 @@ SurfaceToPatch measure_polytope_to_patch(const PatchEvaluator& patch, const Fram
     }
   }
   for (const Point& y : zeros) {
-    const bool in_box =
-        y[0] >= lo[0] && y[0] <= hi[0] && y[1] >= lo[1] && y[1] <= hi[1] && y[2] >= lo[2] && y[2] <= hi[2];
-    if (!in_box || polytope.excess(y) > 0) continue;
-    result.beyond_piece = std::max(result.beyond_piece, distance_to_patch(patch, own, piece, y));
-    const double d = std::min(distance_to_patch(patch, near, whole, y), distance_to_patch(patch, far, whole, y));
-    result.distance = std::max(result.distance, d);
-    ++result.samples;
+    if (inside(y)) measure(tube.to_piece(y), tube.to_patch(y));
   }
   return result;
 }

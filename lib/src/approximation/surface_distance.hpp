@@ -27,6 +27,7 @@
 
 #include <array>
 #include <cstddef>
+#include <vector>
 
 #include "implicitizer/approximation/trim_polytope.hpp"
 #include "implicitizer/core/budget.hpp"
@@ -49,23 +50,56 @@ struct SurfaceToPatch {
 /// R widened by a quarter of its sides on every side.
 ParameterRect widened(const ParameterRect& r);
 
-/// See the file comment; `domain` is D, `piece` S.
-SurfaceToPatch measure_surface_to_patch(const PatchEvaluator& patch, const FramedPolynomial& q,
-                                        const ParameterRect& piece, const ParameterRect& domain, double reach,
-                                        const Budget& budget);
+/// Points of the patch over a 25×25 grid of a parameter rectangle, with their
+/// parameters: where the projections of distance_to_patch start.
+struct SeedGrid {
+  std::vector<Point> points;
+  std::vector<std::array<double, 2>> parameters;
+};
+
+/// The zeros of q near X(S) of the file comment's sample, the seed grids of S, S' and
+/// D', and the distances of the zeros computed on first use. A piece's two
+/// measurements (its polytope's, then the tube's where the polytope is not kept) read
+/// the same sample, so it is collected once.
+class TubeSample {
+ public:
+  /// `domain` is D, `piece` S.
+  TubeSample(const PatchEvaluator& patch, const FramedPolynomial& q, const ParameterRect& piece,
+             const ParameterRect& domain, double reach, const Budget& budget);
+  /// Whether every seed grid has a point (a patch defined nowhere on them has none).
+  bool seeded() const;
+  const std::vector<Point>& zeros() const { return zeros_; }
+  /// The distance of y to X(S), and to X(D') (the smaller of the two projections).
+  double to_piece(const Point& y) const;
+  double to_patch(const Point& y) const;
+  /// The same of zeros()[k], each computed at most once.
+  double zero_to_piece(std::size_t k);
+  double zero_to_patch(std::size_t k);
+  double reach() const { return reach_; }
+
+ private:
+  const PatchEvaluator& patch_;
+  ParameterRect piece_;
+  ParameterRect whole_;  // D'
+  double reach_;
+  SeedGrid own_, near_, far_;  // over S, S' and D'
+  std::vector<Point> zeros_;
+  std::vector<double> to_piece_, to_patch_;  // NaN until computed
+};
+
+/// See the file comment.
+SurfaceToPatch measure_surface_to_patch(TubeSample& tube);
 
 /// The same measurement for a piece trimmed to `polytope` ∩ the box [lo, hi]
 /// (trim_polytope.hpp) instead of the tube: the zeros of q that lie in both, found as
-/// above (normal segments and Newton projections of reach `reach`) and where q changes
-/// sign along lines parallel to x, y and z through a 48×48 grid of the box's
-/// cross-section (48 samples per line, then bisection; a sheet is crossed by the
-/// family most normal to it), measured against X(D') as above; and against X(S)
-/// (beyond_piece), which says whether the polytope keeps more of q's continuation
-/// past S's edges than the tube of `reach` would.
-SurfaceToPatch measure_polytope_to_patch(const PatchEvaluator& patch, const FramedPolynomial& q,
-                                         const TrimPolytope& polytope, const Point& lo, const Point& hi,
-                                         const ParameterRect& piece, const ParameterRect& domain, double reach,
-                                         const Budget& budget);
+/// above (the tube's sample) and where q changes sign along lines parallel to x, y and
+/// z through a 48×48 grid of the box's cross-section (48 samples per line, then
+/// bisection; a sheet is crossed by the family most normal to it), measured against
+/// X(D') as above; and against X(S) (beyond_piece), which says whether the polytope
+/// keeps more of q's continuation past S's edges than the tube of the sample's reach
+/// would.
+SurfaceToPatch measure_polytope_to_patch(TubeSample& tube, const FramedPolynomial& q, const TrimPolytope& polytope,
+                                         const Point& lo, const Point& hi, const Budget& budget);
 
 /// max |q(X)|/|∇q(X)| over a side×side grid of the piece: the first-order distance of
 /// the patch to {q = 0}, an estimate (not a bound) used only to skip degrees.
