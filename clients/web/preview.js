@@ -154,16 +154,16 @@ void main() {
 `;
 
 // The tetrahedron technique on `fn` (docs/render.md §5): N = Σ k_i f(p + h k_i) = 4h∇f + O(h²),
-// k_i = (1, −1, −1), (−1, −1, 1), (−1, 1, −1), (1, 1, 1) made from the index. A loop the
-// compiler cannot unroll (it starts at the uniform pv_zero, always 0) keeps one copy of
-// `fn` instead of four: a GPU compiler inlines every call, and compiling is what a heavy
-// surface's first picture waits for (SwiftShader compiles at the first draw).
+// k_i from pv_tetrahedron. A loop the compiler cannot unroll (it starts at the uniform
+// pv_zero, always 0) keeps one copy of `fn` instead of four: a GPU compiler inlines every
+// call, and compiling is what a heavy surface's first picture waits for (SwiftShader
+// compiles at the first draw).
 function tetrahedronNormal(name, fn) {
   return `vec3 ${name}(vec3 p) {
   float h = 1e-3 * pv_unit;
   vec3 n = vec3(0.0);
   for (int i = pv_zero; i < 4; ++i) {
-    vec3 k = 2.0 * vec3(float(((i + 3) >> 1) & 1), float((i >> 1) & 1), float(i & 1)) - 1.0;
+    vec3 k = pv_tetrahedron(i);
     n += k * ${fn}(p + h * k);
   }
   float len = length(n);
@@ -198,7 +198,10 @@ ${side.glsl}
 // ---- end ----
 ` : ''}
 float pv_map(vec3 p) { return ${surface.functionName}(p); }
-${tetrahedronNormal('pv_normal', 'pv_map')}
+// The tetrahedron's vertices k_i = (1, −1, −1), (−1, −1, 1), (−1, 1, −1), (1, 1, 1).
+vec3 pv_tetrahedron(int i) {
+  return 2.0 * vec3(float(((i + 3) >> 1) & 1), float((i >> 1) & 1), float(i & 1)) - 1.0;
+}
 ${side ? `float pv_signed(vec3 p) { return ${side.functionName}(p); }
 ${tetrahedronNormal('pv_signed_normal', 'pv_signed')}
 // The side's sign where the march asks for it: at p pulled into the sheet's box (less a
@@ -210,51 +213,61 @@ uniform vec3 pv_side_lo;
 uniform vec3 pv_side_hi;
 float pv_side_sign(vec3 p) { return sign(pv_signed(clamp(p, pv_side_lo, pv_side_hi))); }` : ''}
 
-// The improved soft shadow (shading.cpp soft_shadow): k = 1.5, from 0.02u to 2.5u.
-float pv_shadow(vec3 p, vec3 l) {
-  float t = 0.02 * pv_unit;
-  float tmax = 2.5 * pv_unit;
-  float res = 1.0;
-  for (int i = pv_zero; i < 64; ++i) {
-    if (t > tmax) break;
-    float f = pv_map(p + t * l);
-    res = min(res, 1.5 * f / t);
-    if (res < -1.0) break;
-    t += max(abs(f), 1e-4 * pv_unit);
-  }
-  return smoothstep(-1.0, 1.0, max(res, -1.0));
-}
-
-// Ambient occlusion along the normal (shading.cpp ambient_occlusion), 4 samples.
-float pv_occlusion(vec3 p, vec3 n) {
-  float occluded = 0.0;
-  float weight = 0.5;
-  for (int i = 1 + pv_zero; i <= 4; ++i) {
-    float d = pv_unit * float(i) / 4.0;
-    occluded += weight * (d - pv_map(p + d * n)) / pv_unit;
-    weight *= 0.5;
-  }
-  return clamp(1.0 - occluded, 0.0, 1.0);
-}
-
 // Blinn-Phong with Schlick's Fresnel, one sun, gamma 2.2 (shading.cpp shade_hit); a
 // sheet's back (the side where F < 0 faces the viewer) in blue (ShadingParams::back_albedo).
+// What shading asks of the surface (its normal where no side function gives one,
+// ambient occlusion along the normal with 4 samples, the improved soft shadow with
+// k = 1.5 from 0.02u to 2.5u) runs in one loop with one call of it: each call site is
+// a copy of the surface's code to compile, and with the march's this makes two instead
+// of four. The march keeps its own loop: one loop for everything compiled faster still
+// but drew several times slower (docs/benchmarks.md, "The page: first pictures on
+// SwiftShader").
 vec3 pv_shade(vec3 p, vec3 rd) {
   vec3 albedo = vec3(0.80, 0.52, 0.30);
 ${side ? `  vec3 n = pv_signed_normal(p);
-  if (dot(n, rd) > 0.0) albedo = vec3(0.25, 0.42, 0.80);
-  if (n == vec3(0.0)) n = pv_normal(p);` : `  vec3 n = pv_normal(p);`}
-  if (dot(n, rd) > 0.0) n = -n;
-  vec3 view = -rd;
-  vec3 colour = vec3(0.20, 0.22, 0.26) * albedo * pv_occlusion(p, n);
+  if (dot(n, rd) > 0.0) albedo = vec3(0.25, 0.42, 0.80);` : `  vec3 n = vec3(0.0);`}
+  int phase = n == vec3(0.0) ? 0 : 1;  // 0 the surface's normal, 1 occlusion, 2 shadow
+  if (phase == 1 && dot(n, rd) > 0.0) n = -n;
+  vec3 sum = vec3(0.0);
+  int k = 0;
+  float h = 1e-3 * pv_unit;
+  float occluded = 0.0, weight = 0.5;
+  vec3 colour = vec3(0.0);
   vec3 l = normalize(vec3(-0.5, 0.8, 0.35));
-  float diffuse = max(0.0, dot(n, l));
-  if (diffuse > 0.0) {
-    vec3 h = normalize(l + view);
-    float fresnel = 0.04 + 0.96 * pow(clamp(1.0 - dot(h, l), 0.0, 1.0), 5.0);
-    float highlight = pow(max(0.0, dot(n, h)), 32.0) * fresnel;
-    float shadow = pv_shadow(p, l);
-    colour += vec3(1.0, 0.96, 0.9) * shadow * diffuse * (albedo + 0.5 * highlight);
+  float diffuse = 0.0, highlight = 0.0, st = 0.0, res = 1.0;
+  for (int i = pv_zero; i < 4 + 4 + 64; ++i) {
+    vec3 q = phase == 0 ? p + h * pv_tetrahedron(k) : phase == 1 ? p + (pv_unit * float(k + 1) / 4.0) * n : p + st * l;
+    float f = pv_map(q);
+    if (phase == 0) {
+      sum += pv_tetrahedron(k) * f;
+      if (++k < 4) continue;
+      float len = length(sum);
+      n = len > 0.0 ? sum / len : vec3(0.0);
+      if (dot(n, rd) > 0.0) n = -n;
+      phase = 1;
+      k = 0;
+      continue;
+    }
+    if (phase == 1) {
+      occluded += weight * (pv_unit * float(k + 1) / 4.0 - f) / pv_unit;
+      weight *= 0.5;
+      if (++k < 4) continue;
+      colour = vec3(0.20, 0.22, 0.26) * albedo * clamp(1.0 - occluded, 0.0, 1.0);
+      diffuse = max(0.0, dot(n, l));
+      if (diffuse <= 0.0) break;
+      vec3 halfway = normalize(l - rd);
+      float fresnel = 0.04 + 0.96 * pow(clamp(1.0 - dot(halfway, l), 0.0, 1.0), 5.0);
+      highlight = pow(max(0.0, dot(n, halfway)), 32.0) * fresnel;
+      phase = 2;
+      st = 0.02 * pv_unit;
+      k = 0;
+      continue;
+    }
+    res = min(res, 1.5 * f / st);
+    st += max(abs(f), 1e-4 * pv_unit);
+    if (res >= -1.0 && ++k < 64 && st <= 2.5 * pv_unit) continue;
+    colour += vec3(1.0, 0.96, 0.9) * smoothstep(-1.0, 1.0, max(res, -1.0)) * diffuse * (albedo + 0.5 * highlight);
+    break;
   }
   return pow(clamp(colour, 0.0, 1.0), vec3(1.0 / 2.2));
 }
