@@ -44,8 +44,8 @@ void add_seed_grid(const PatchEvaluator& patch, const ParameterRect& rect, SeedG
 // |X(s*, t*) − y| after Gauss–Newton on |X(s, t) − y|² from the nearest seed, clamped
 // to `rect`; the smallest distance met on the way.
 double distance_to_patch(const PatchEvaluator& patch, const SeedGrid& seeds, const ParameterRect& rect, const Point& y) {
-  // The nearest seed by squared distance (one square root, not one per seed: this scan
-  // was a quarter of an approximation's time).
+  // The nearest seed by squared distance: one square root, not one per seed (the scan
+  // runs for every sample against every seed).
   std::size_t nearest = 0;
   double best_squared = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < seeds.points.size(); ++k) {
